@@ -1,0 +1,97 @@
+// `beverloo bench [--runs R] [--case a|b|c ...] [--steps S]`: the standard performance cases,
+// particle-steps per second, median and spread of R timed runs from the same flowing state.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "engine/protocol/hopper_run.h"
+#include "orchestrator/cli/commands.h"
+#include "orchestrator/cli/exit_codes.h"
+
+namespace beverloo {
+namespace {
+
+struct BenchCase {
+  std::string id, description;
+  SimConfig config;
+  double warmup_time;     ///< t0 of flow before timing, so that the pile is flowing
+  std::int64_t steps;     ///< timed steps per run
+};
+
+std::vector<BenchCase> standard_cases(double scale) {
+  auto base = [](int dim, int N, double zeta, double mu) {
+    SimConfig c;
+    c.dimension = dim;
+    c.N = N;
+    c.w = 6;
+    c.E_sp = 100;
+    c.zeta = zeta;
+    c.mu = mu;
+    c.seed = 1;
+    c.resolve_and_validate();
+    return c;
+  };
+  const double mu_f = 10 * std::sqrt(10.0), zeta_d = 1 / std::sqrt(10.0);
+  return {
+      {"a", "2D SP N=1600 w=6 E_sp=100 friction only (mu=10 sqrt 10)", base(2, 1600, 0, mu_f), 30,
+       std::llround(20000 * scale)},
+      {"b", "2D SP N=1600 w=6 E_sp=100 drag only (zeta=1/sqrt 10)", base(2, 1600, zeta_d, 0), 30,
+       std::llround(20000 * scale)},
+      {"c", "3D SP N=6400 w=6 E_sp=100 friction only (mu=10 sqrt 10)", base(3, 6400, 0, mu_f), 10,
+       std::llround(4000 * scale)},
+  };
+}
+
+template <int D>
+void run_case(const BenchCase& bc, int runs) {
+  HopperRun<D> warm(bc.config, RunOptions{});
+  warm.prepare();
+  warm.advance(std::llround(bc.warmup_time / warm.time_step().dt));
+  std::vector<double> rates;
+  for (int r = 0; r < runs; ++r) {
+    HopperRun<D> run = HopperRun<D>(bc.config, RunOptions{});
+    run.prepare();
+    // every timed run starts from the same warmed-up state
+    run.state() = warm.state();
+    run.forces().list().invalidate();
+    const auto t0 = std::chrono::steady_clock::now();
+    run.advance(bc.steps);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rates.push_back(bc.steps * double(bc.config.N) / s);
+  }
+  std::sort(rates.begin(), rates.end());
+  const double median = rates[rates.size() / 2];
+  std::printf("%-2s %-58s median %8.3g  min %8.3g  max %8.3g particle-steps/s  (%d runs x %lld steps, dt %.3g)\n",
+              bc.id.c_str(), bc.description.c_str(), median, rates.front(), rates.back(), runs,
+              static_cast<long long>(bc.steps), warm.time_step().dt);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, int& exit_status) {
+  struct Args {
+    int runs = 3;
+    std::vector<std::string> cases;
+    double scale = 1.0;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("bench", "Standard performance cases: particle-steps per second");
+  cmd->add_option("--runs", a->runs, "timed runs per case (median and spread)")->check(CLI::Range(1, 100));
+  cmd->add_option("--case", a->cases, "cases to run (a, b, c; default all)");
+  cmd->add_option("--scale", a->scale, "multiply the timed steps by this")->check(CLI::PositiveNumber);
+  cmd->callback([a, &exit_status] {
+    for (const BenchCase& bc : standard_cases(a->scale)) {
+      if (!a->cases.empty() && std::find(a->cases.begin(), a->cases.end(), bc.id) == a->cases.end()) continue;
+      if (bc.config.dimension == 2)
+        run_case<2>(bc, a->runs);
+      else
+        run_case<3>(bc, a->runs);
+    }
+    exit_status = exit_code::kOk;
+  });
+}
+
+}  // namespace beverloo

@@ -1,0 +1,121 @@
+#pragma once
+/// \file config.h
+/// \brief The typed configuration of one hopper-flow job, with every default of physics.md.
+///
+/// The default member initialisers below are the one defaults table of the engine: each
+/// "Decision:" of shared/spec/physics.md lives here and nowhere else. All values are in the
+/// code units of units.h unless a name says otherwise (*_deg: degrees; *_steps: time steps).
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace beverloo {
+
+/// A configuration error: names the field (a JSON path) and the reason. Exit code 2.
+class ConfigError : public std::runtime_error {
+ public:
+  ConfigError(const std::string& field, const std::string& reason)
+      : std::runtime_error(field + ": " + reason), field_(field) {}
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string field_;
+};
+
+/// FIRE minimiser constants (Bitzek et al. 2006, physics.md section 6.2).
+struct FireParams {
+  double alpha0 = 0.1;
+  double f_inc = 1.1;
+  double f_dec = 0.5;
+  double f_alpha = 0.99;
+  int n_min = 5;
+  double dt_max_factor = 10.0;  ///< dt_max = dt_max_factor * dt
+  double force_tol = 1e-6;      ///< stop when max |F| (code units) falls below this
+  std::int64_t max_iter = 2000000;
+};
+
+/// Run controls: when to stop, what to write. Times in t0.
+struct RunControls {
+  double t_max = 2000.0;             ///< hard limit on flowing time after gravity is switched on
+  double target_rel_err = 0.02;      ///< stop when SE(Q)/Q falls below this
+  double t_clog = 100.0;             ///< no exit for this long: clogged
+  double min_transient = 20.0;       ///< transient removed is at least this long
+  double min_window = 100.0;         ///< the measurement window is at least this long before stopping
+  double check_interval = 10.0;      ///< how often the stopping rule is evaluated
+  double rate_bin = 1.0;             ///< bin width of the exit-rate series (MSER, blocking)
+  double checkpoint_interval = 100.0;  ///< simulated time between checkpoints (0: none)
+  std::int64_t trajectory_every_steps = 0;  ///< H5MD frame every K steps (0: no trajectory)
+};
+
+/// Reinjection of exited particles on top of the pile (physics.md 6.4).
+struct ReinjectionParams {
+  double drop_depth_diameters = 2.0;  ///< reinject once this many own diameters below the orifice
+  /// Only particles of the pile are touched: at least this many overlapping contacts. Without
+  /// it, the newest airborne reinjected particle is the "topmost" one and, with strong drag,
+  /// reinjection builds a free-flying tower that never lands.
+  int min_contacts = 1;
+  double top_band = 3.0;              ///< candidates to touch: within this of the highest pile particle
+  int max_attempts = 500;             ///< random placements tried before the fallback
+};
+
+/// Observables of physics.md section 7.
+struct ObservableParams {
+  double sample_interval = 0.1;  ///< t0 between samples of profile, density and forces
+  double block_length = 5.0;     ///< t0 per accumulation block (transient cut, errors)
+  double profile_dh = 0.25;      ///< height spacing of v_g(h)
+  double profile_h_max = 30.0;   ///< largest height of v_g(h) above the orifice
+  double kernel_width = 1.0;     ///< Gaussian coarse-graining width (sigma_avg)
+};
+
+struct SimConfig {
+  // --- model and system -------------------------------------------------------------
+  std::string model = "sp";  ///< "sp" (soft particles); "dp_rough"/"dp_smooth" come later
+  int dimension = 2;
+  int N = 0;                 ///< 0: default (1600 in 2D, 6400 in 3D)
+  double size_ratio = 1.4;   ///< sigma_l / sigma_s
+  double W = 0;              ///< container width (2D) or diameter (3D); 0: 50 (2D) / 25 (3D)
+  double w = 0;              ///< orifice width (2D) or diameter (3D); required
+  double theta_w_left_deg = 90.0;   ///< funnel angle from gravity, left wall (2D)
+  double theta_w_right_deg = 90.0;  ///< funnel angle from gravity, right wall (2D)
+  // --- interactions -------------------------------------------------------------------
+  double E_sp = 100.0;  ///< pair stiffness, units g rho sigma^(d+1)
+  double E_w = 1e4;     ///< wall stiffness
+  double zeta = -1;     ///< viscous drag; required
+  double mu = -1;       ///< kinetic friction; required
+  double gravity = 1.0; ///< in units of g (tests switch it off)
+  // --- numerics -----------------------------------------------------------------------
+  std::optional<double> dt;  ///< unset: "auto"
+  double skin = 0.3;         ///< Verlet-list skin (not physics; only speed)
+  /// A relative pair overlap 1 - r/sigma_mn above this stops the run as unstable. Half a
+  /// diameter (0.5) is reached physically in force chains at E_sp = 100 (measured: 0.50-0.57
+  /// in 2D drag-only flows), so the default sits above it; a blow-up overshoots it at once.
+  double max_overlap = 0.9;
+  // --- protocol -----------------------------------------------------------------------
+  double initial_packing_fraction = 0.5;  ///< random placement density before FIRE
+  bool reinject = true;                   ///< false: draining hopper (physics.md 9)
+  std::optional<std::uint64_t> seed;      ///< unset: derived from the parameters
+  int replica = 0;                        ///< changes the derived seed, nothing else
+  FireParams fire;
+  RunControls run;
+  ReinjectionParams reinjection;
+  ObservableParams observables;
+
+  /// Parse a job file. Unknown fields are errors (a typo must not silently become a default).
+  static SimConfig from_json(const nlohmann::json& j);
+  /// Fully resolved parameters, defaults filled in, keys sorted: the job's identity.
+  nlohmann::json to_json() const;
+  /// Fills the dimension-dependent defaults and checks every field; throws ConfigError.
+  void resolve_and_validate();
+  /// The seed: explicit, or a hash of the canonical physics and protocol parameters
+  /// (run controls excluded: t_max or checkpoint cadence must not change the trajectory).
+  std::uint64_t effective_seed() const;
+
+  // Derived sizes (valid after resolve_and_validate).
+  double sigma_small() const { return 2.0 / (1.0 + size_ratio); }
+  double sigma_large() const { return size_ratio * sigma_small(); }
+};
+
+}  // namespace beverloo

@@ -1,0 +1,64 @@
+#pragma once
+/// \file force_field.h
+/// \brief All force terms of one simulation, evaluated together. Owns the Verlet list so that
+/// every evaluation starts from a valid list.
+#include <memory>
+#include <vector>
+
+#include "../config.h"
+#include "drag.h"
+#include "gravity.h"
+#include "hopper_walls.h"
+#include "sp_contact.h"
+
+namespace beverloo {
+
+struct ForceReport {
+  double U_contact = 0, U_wall = 0, U_gravity = 0;
+  double P_drag = 0, P_friction = 0;
+  double max_overlap = 0;  ///< largest relative pair overlap 1 - r/sigma_mn
+  double potential() const { return U_contact + U_wall + U_gravity; }
+};
+
+template <int D>
+class ForceField {
+ public:
+  ForceField(const SimConfig& c, const Hopper<D>& hopper)
+      : list_(c.skin), contact_(list_, c.E_sp, c.mu), walls_(hopper, list_, c.E_w), gravity_(c.gravity),
+        drag_(c.zeta), hopper_(hopper) {}
+
+  /// Zeroes s.f, brings the list up to date and adds every term. O(N).
+  ForceReport compute(ParticleState<D>& s) {
+    list_.update(s, hopper_);
+    for (auto& fi : s.f) fi.setZero();
+    ForceReport r;
+    const TermOutput c = contact_.accumulate(s, s.f);
+    r.U_contact = c.energy;
+    r.P_friction = c.power;
+    r.max_overlap = contact_.max_overlap();
+    r.U_wall = walls_.accumulate(s, s.f).energy;
+    r.U_gravity = gravity_.accumulate(s, s.f).energy;
+    r.P_drag = drag_.accumulate(s, s.f).power;
+    return r;
+  }
+  /// Dissipation off: FIRE minimises the potential energy only.
+  void set_dissipation(bool on) {
+    contact_.set_friction_enabled(on);
+    drag_.set_enabled(on);
+  }
+  void set_gravity(double g) { gravity_.set_g(g); }
+  NeighborList<D>& list() { return list_; }
+  const SpContact<D>& contact() const { return contact_; }
+  /// The terms one by one (for the generic physics tests).
+  std::vector<ForceTerm<D>*> terms() { return {&contact_, &walls_, &gravity_, &drag_}; }
+
+ private:
+  NeighborList<D> list_;
+  SpContact<D> contact_;
+  HopperWalls<D> walls_;
+  Gravity<D> gravity_;
+  Drag<D> drag_;
+  const Hopper<D>& hopper_;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,31 @@
+#pragma once
+/// \file gravity.h
+/// \brief Gravity along -y (2D) or -z (3D): U = M g h, F = -M g e_up.
+#include "force_term.h"
+
+namespace beverloo {
+
+template <int D>
+class Gravity final : public ForceTerm<D> {
+ public:
+  explicit Gravity(double g) : g_(g) {}
+  std::string_view name() const override { return "gravity"; }
+  void set_g(double g) { g_ = g; }
+  double g() const { return g_; }
+  TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
+    if (g_ == 0) return {};
+    double energy = 0;
+    const int n = s.size();
+    for (int i = 0; i < n; ++i) {
+      const double m = s.mass(i);
+      energy += m * g_ * s.x[i][kUp<D>];
+      f[i][kUp<D>] -= m * g_;
+    }
+    return {energy, 0};
+  }
+
+ private:
+  double g_;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,47 @@
+#pragma once
+/// \file hopper_walls.h
+/// \brief Harmonic walls: U = (E_w/2)(1 - 2 d_w/sigma_m)^2 for d_w < sigma_m/2, where d_w is the
+/// distance to the nearest point of a wall (so wall ends at the orifice act as corners).
+#include "../geometry/hopper.h"
+#include "../neighbor/neighbor_list.h"
+#include "force_term.h"
+#include "harmonic_overlap.h"
+
+#include <cmath>
+
+namespace beverloo {
+
+template <int D>
+class HopperWalls final : public ForceTerm<D> {
+ public:
+  HopperWalls(const Hopper<D>& hopper, const NeighborList<D>& list, double E_w)
+      : hopper_(hopper), list_(list), eps_(E_w) {}
+  std::string_view name() const override { return "hopper_walls"; }
+  TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
+    double energy = 0;
+    const int n = s.size();
+    for (int i = 0; i < n; ++i) {
+      std::uint8_t mask = list_.wall_mask(i);
+      if (!mask) continue;
+      const double half = 0.5 * s.sigma(i), inv_half = 1.0 / half;
+      for (int w = 0; mask; ++w, mask >>= 1) {
+        if (!(mask & 1u)) continue;
+        const Vec<D> away = s.x[i] - hopper_.nearest_point(w, s.x[i]);
+        const double d2 = away.squaredNorm();
+        if (d2 >= half * half || d2 == 0) continue;
+        const double d = std::sqrt(d2);
+        double dU_dd;
+        energy += HarmonicOverlap::energy(eps_, d, inv_half, dU_dd);
+        f[i] += (-dU_dd / d) * away;
+      }
+    }
+    return {energy, 0};
+  }
+
+ private:
+  const Hopper<D>& hopper_;
+  const NeighborList<D>& list_;
+  double eps_;
+};
+
+}  // namespace beverloo

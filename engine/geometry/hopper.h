@@ -1,0 +1,80 @@
+#pragma once
+/// \file hopper.h
+/// \brief Hopper containers. Every wall is a finite object queried by its nearest point, so the
+/// orifice edges are corners (a particle there feels the wall's end point, physics.md 2).
+///
+/// 2D (Hopper<2>): gravity along -y, orifice from (-w/2, 0) to (w/2, 0). Walls:
+///   0 left funnel  segment (-w/2, 0) -> (-W/2, h_left),   h_left  = (W - w)/2 cot(theta_left)
+///   1 right funnel segment ( w/2, 0) -> ( W/2, h_right),  h_right = (W - w)/2 cot(theta_right)
+///   2 left side    ray from (-W/2, h_left) upward
+///   3 right side   ray from ( W/2, h_right) upward
+/// 3D (Hopper<3>): gravity along -z, cylinder of diameter W from z = 0 upward, flat base in the
+/// plane z = 0 with a circular orifice of diameter w on the axis. Walls: 0 base annulus,
+/// 1 cylinder mantle. Its bottom rim and the orifice rim are the corners.
+#include <cmath>
+
+#include "../vec.h"
+
+namespace beverloo {
+
+template <int D>
+class Hopper;
+
+template <>
+class Hopper<2> {
+ public:
+  static constexpr int kNumWalls = 4;
+  Hopper(double W, double w, double theta_left_rad, double theta_right_rad);
+
+  /// Nearest point of wall k to p.
+  Vec<2> nearest_point(int k, const Vec<2>& p) const {
+    const Segment& s = seg_[k];
+    double t = (p - s.a).dot(s.u);
+    t = t < 0 ? 0 : (t > s.length ? s.length : t);
+    return s.a + t * s.u;
+  }
+  /// True if p lies inside the container (between the walls) or below the orifice plane.
+  bool contains(const Vec<2>& p) const;
+  /// Lateral extent available to a particle centre of radius r at height y >= funnel_top().
+  double half_width() const { return W_ / 2; }
+  double funnel_top() const { return std::max(h_left_, h_right_); }
+  double orifice_half_width() const { return w_ / 2; }
+  /// Lateral distance of p from the orifice axis (|x|).
+  static double lateral(const Vec<2>& p) { return std::fabs(p[0]); }
+
+ private:
+  struct Segment {
+    Vec<2> a, u;
+    double length;
+  };
+  double W_, w_, h_left_, h_right_;
+  Segment seg_[kNumWalls];
+};
+
+template <>
+class Hopper<3> {
+ public:
+  static constexpr int kNumWalls = 2;
+  Hopper(double W, double w) : R_(W / 2), r_orifice_(w / 2) {}
+
+  Vec<3> nearest_point(int k, const Vec<3>& p) const {
+    const double rho = std::hypot(p[0], p[1]);
+    // Radial unit vector; on the axis any direction is nearest, pick +x deterministically.
+    const double ex = rho > 0 ? p[0] / rho : 1.0, ey = rho > 0 ? p[1] / rho : 0.0;
+    if (k == 0) {  // base annulus r_orifice <= rho <= R in the plane z = 0
+      const double rc = rho < r_orifice_ ? r_orifice_ : (rho > R_ ? R_ : rho);
+      return Vec<3>(rc * ex, rc * ey, 0.0);
+    }
+    return Vec<3>(R_ * ex, R_ * ey, p[2] > 0 ? p[2] : 0.0);  // mantle, z >= 0
+  }
+  bool contains(const Vec<3>& p) const { return std::hypot(p[0], p[1]) < R_; }
+  double half_width() const { return R_; }
+  double funnel_top() const { return 0.0; }
+  double orifice_half_width() const { return r_orifice_; }
+  static double lateral(const Vec<3>& p) { return std::hypot(p[0], p[1]); }
+
+ private:
+  double R_, r_orifice_;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,111 @@
+/// \file checkpoint.cpp
+/// \brief HopperRun's checkpoints: the complete state (positions, velocities, forces, exit flags,
+/// RNG state, step, every accumulator), written to checkpoint.h5.tmp, fsync'ed and renamed.
+#include <chrono>
+
+#include "../protocol/hopper_run.h"
+#include "h5.h"
+
+namespace beverloo {
+namespace {
+
+template <int D>
+std::vector<double> flatten(const VecArray<D>& a) {
+  std::vector<double> out(a.size() * D);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (int d = 0; d < D; ++d) out[i * D + d] = a[i][d];
+  return out;
+}
+template <int D>
+void unflatten(const std::vector<double>& in, VecArray<D>& a, const std::string& name) {
+  if (in.size() != a.size() * D) throw IoError("checkpoint: " + name + " has the wrong size");
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (int d = 0; d < D; ++d) a[i][d] = in[i * D + d];
+}
+
+}  // namespace
+
+template <int D>
+void HopperRun<D>::save_checkpoint(const std::string& target) const {
+  const std::string tmp = target + ".tmp";
+  {
+    H5Handle f = h5::create_file(tmp);
+    h5::attr(f, "format", std::string("beverloo-checkpoint"));
+    h5::attr(f, "format_version", std::int64_t{1});
+    h5::attr(f, "engine_version", std::string(BEVERLOO_VERSION));
+    h5::attr(f, "job_json", c_.to_json().dump());
+    h5::attr(f, "step", s_.step);
+    const double session = std::chrono::duration<double>(std::chrono::steady_clock::now() - session_start_).count();
+    h5::attr(f, "wall_seconds", wall_seconds_before_ + session);
+    h5::attr(f, "resumed_times", std::int64_t{resumed_times_});
+    h5::attr(f, "fire_iterations", fire_iterations_);
+    h5::attr(f, "fire_max_force", fire_max_force_);
+    H5Handle p = h5::create_group(f, "particles");
+    h5::write(p, "x", flatten<D>(s_.x), {hsize_t(s_.size()), hsize_t(D)});
+    h5::write(p, "v", flatten<D>(s_.v), {hsize_t(s_.size()), hsize_t(D)});
+    h5::write(p, "f", flatten<D>(s_.f), {hsize_t(s_.size()), hsize_t(D)});
+    h5::write(p, "species", s_.species);
+    h5::write(p, "exited", s_.exited);
+    const auto& st = rng_.state();
+    h5::write(f, "rng_state", std::vector<std::uint64_t>(st.begin(), st.end()));
+    H5Handle r = h5::create_group(f, "record");
+    h5::write(r, "exit_time", rec_.exit_time);
+    h5::write(r, "exit_particle", rec_.exit_particle);
+    h5::write(r, "exit_size", rec_.exit_size);
+    h5::attr(r, "last_exit_time", rec_.last_exit_time);
+    h5::attr(r, "reinjections", rec_.reinjections);
+    h5::attr(r, "reinjection_fallbacks", rec_.reinjection_fallbacks);
+    h5::attr(r, "max_overlap_seen", rec_.max_overlap_seen);
+    H5Handle o = h5::create_group(f, "observables");
+    h5::write(o, "block_scalars", obs_.block_scalars);
+    h5::write(o, "block_profile", obs_.block_profile);
+    H5Fflush(f, H5F_SCOPE_GLOBAL);
+  }
+  commit_atomically(tmp, target);
+}
+
+template <int D>
+void HopperRun<D>::load_checkpoint(const std::string& source) {
+  H5Handle f = h5::open_file(source);
+  if (h5::attr_string(f, "format") != "beverloo-checkpoint") throw IoError(source + " is not a beverloo checkpoint");
+  const std::string job = h5::attr_string(f, "job_json");
+  if (job != c_.to_json().dump())
+    throw ConfigError("job", "differs from the job of the checkpoint " + source + "; refusing to resume a different job");
+  s_.sp = Species::bidisperse(D, c_.size_ratio);
+  s_.resize(c_.N);
+  H5Handle p = h5::open_group(f, "particles");
+  unflatten<D>(h5::read_doubles(p, "x"), s_.x, "x");
+  unflatten<D>(h5::read_doubles(p, "v"), s_.v, "v");
+  unflatten<D>(h5::read_doubles(p, "f"), s_.f, "f");
+  s_.species = h5::read_uint8(p, "species");
+  s_.exited = h5::read_uint8(p, "exited");
+  if (static_cast<int>(s_.species.size()) != c_.N || static_cast<int>(s_.exited.size()) != c_.N)
+    throw IoError("checkpoint: particle arrays have the wrong size");
+  for (int i = 0; i < c_.N; ++i) s_.inv_mass[i] = 1.0 / s_.sp.mass[s_.species[i]];
+  s_.step = h5::attr_int64(f, "step");
+  const auto st = h5::read_uint64(f, "rng_state");
+  if (st.size() != 4) throw IoError("checkpoint: bad rng_state");
+  rng_.set_state({st[0], st[1], st[2], st[3]});
+  H5Handle r = h5::open_group(f, "record");
+  rec_.exit_time = h5::read_doubles(r, "exit_time");
+  rec_.exit_particle = h5::read_int64(r, "exit_particle");
+  rec_.exit_size = h5::read_doubles(r, "exit_size");
+  rec_.last_exit_time = h5::attr_double(r, "last_exit_time");
+  rec_.reinjections = h5::attr_int64(r, "reinjections");
+  rec_.reinjection_fallbacks = h5::attr_int64(r, "reinjection_fallbacks");
+  rec_.max_overlap_seen = h5::attr_double(r, "max_overlap_seen");
+  H5Handle o = h5::open_group(f, "observables");
+  obs_.block_scalars = h5::read_doubles(o, "block_scalars");
+  obs_.block_profile = h5::read_doubles(o, "block_profile");
+  wall_seconds_before_ = h5::attr_double(f, "wall_seconds");
+  resumed_times_ = static_cast<int>(h5::attr_int64(f, "resumed_times"));
+  fire_iterations_ = h5::attr_int64(f, "fire_iterations");
+  fire_max_force_ = h5::attr_double(f, "fire_max_force");
+}
+
+template void HopperRun<2>::save_checkpoint(const std::string&) const;
+template void HopperRun<3>::save_checkpoint(const std::string&) const;
+template void HopperRun<2>::load_checkpoint(const std::string&);
+template void HopperRun<3>::load_checkpoint(const std::string&);
+
+}  // namespace beverloo

@@ -1,0 +1,83 @@
+#pragma once
+/// \file h5.h
+/// \brief A thin RAII layer over the HDF5 C API: files, groups, 1D/2D datasets and scalar
+/// attributes of the types we store. Every failure throws IoError naming the object.
+#include <hdf5.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace beverloo {
+
+/// An input/output failure (unwritable directory, corrupt file). Exit code 4.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class H5Handle {
+ public:
+  H5Handle() = default;
+  H5Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  H5Handle(H5Handle&& o) noexcept : id_(o.id_), close_(o.close_) { o.id_ = -1; }
+  H5Handle& operator=(H5Handle&& o) noexcept {
+    reset();
+    id_ = o.id_;
+    close_ = o.close_;
+    o.id_ = -1;
+    return *this;
+  }
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+  ~H5Handle() { reset(); }
+  hid_t id() const { return id_; }
+  operator hid_t() const { return id_; }
+  void reset() {
+    if (id_ >= 0 && close_) close_(id_);
+    id_ = -1;
+  }
+
+ private:
+  hid_t id_ = -1;
+  herr_t (*close_)(hid_t) = nullptr;
+};
+
+namespace h5 {
+H5Handle create_file(const std::string& path);  ///< truncates
+H5Handle open_file(const std::string& path, bool writable = false);
+H5Handle create_group(hid_t loc, const std::string& name);
+H5Handle open_group(hid_t loc, const std::string& name);
+bool exists(hid_t loc, const std::string& name);
+
+void write(hid_t loc, const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims = {});
+void write(hid_t loc, const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> dims = {});
+void write(hid_t loc, const std::string& name, const std::vector<std::uint64_t>& data, std::vector<hsize_t> dims = {});
+void write(hid_t loc, const std::string& name, const std::vector<std::uint8_t>& data, std::vector<hsize_t> dims = {});
+void write(hid_t loc, const std::string& name, const std::vector<std::int32_t>& data, std::vector<hsize_t> dims = {});
+std::vector<double> read_doubles(hid_t loc, const std::string& name);
+std::vector<std::int64_t> read_int64(hid_t loc, const std::string& name);
+std::vector<std::uint64_t> read_uint64(hid_t loc, const std::string& name);
+std::vector<std::uint8_t> read_uint8(hid_t loc, const std::string& name);
+
+void attr(hid_t loc, const std::string& name, double value);
+void attr(hid_t loc, const std::string& name, std::int64_t value);
+void attr(hid_t loc, const std::string& name, const std::string& value);
+void attr(hid_t loc, const std::string& name, const std::vector<std::int32_t>& values);
+void attr(hid_t loc, const std::string& name, const std::vector<std::string>& values);
+double attr_double(hid_t loc, const std::string& name);
+std::int64_t attr_int64(hid_t loc, const std::string& name);
+std::string attr_string(hid_t loc, const std::string& name);
+
+/// Makes HDF5 quiet (we report errors ourselves); call once.
+void silence_errors();
+}  // namespace h5
+
+/// Writes a file atomically: the writer fills `path + ".tmp"`, which is then fsync'ed and
+/// renamed over `path`, and the directory fsync'ed. A crash leaves either the old or the new file.
+void commit_atomically(const std::string& tmp_path, const std::string& path);
+/// Writes text to path atomically.
+void write_text_atomically(const std::string& path, const std::string& text);
+
+}  // namespace beverloo

@@ -1,0 +1,101 @@
+#include "result_file.h"
+
+#include "h5.h"
+
+namespace beverloo {
+
+void write_result_file(const std::string& path, const SimConfig& c, const RunResult& r) {
+  const std::string tmp = path + ".tmp";
+  {
+    H5Handle f = h5::create_file(tmp);
+    h5::attr(f, "format", std::string("beverloo-result"));
+    h5::attr(f, "format_version", std::int64_t{1});
+    h5::attr(f, "engine_version", std::string(BEVERLOO_VERSION));
+    {
+      H5Handle p = h5::create_group(f, "parameters");
+      h5::attr(p, "job_json", c.to_json().dump());
+      h5::attr(p, "dimension", std::int64_t{c.dimension});
+      h5::attr(p, "N", std::int64_t{c.N});
+      h5::attr(p, "W", c.W);
+      h5::attr(p, "w", c.w);
+      h5::attr(p, "theta_w_left_deg", c.theta_w_left_deg);
+      h5::attr(p, "theta_w_right_deg", c.theta_w_right_deg);
+      h5::attr(p, "E_sp", c.E_sp);
+      h5::attr(p, "E_w", c.E_w);
+      h5::attr(p, "zeta", c.zeta);
+      h5::attr(p, "mu", c.mu);
+      h5::attr(p, "lambda", c.mu > 0 ? c.zeta / c.mu : INFINITY);
+      h5::attr(p, "seed", static_cast<std::int64_t>(r.seed));
+      h5::attr(p, "dt", r.dt);
+    }
+    {
+      H5Handle g = h5::create_group(f, "result");
+      h5::attr(g, "status", r.status);
+      h5::attr(g, "stop_reason", r.stop_reason);
+      h5::attr(g, "Q", r.Q);
+      h5::attr(g, "Q_err", r.Q_err);
+      h5::attr(g, "Q_rel_err", r.Q_rel_err);
+      h5::attr(g, "window_start", r.window_start);
+      h5::attr(g, "window_end", r.window_end);
+      h5::attr(g, "exits_in_window", r.exits_in_window);
+      h5::attr(g, "exits_total", r.exits_total);
+      h5::attr(g, "clogged", std::int64_t{r.clogged});
+      h5::attr(g, "clog_time", r.clog_time);
+      h5::attr(g, "clog_detected_time", r.clog_detected_time);
+      h5::attr(g, "rho_n", r.rho_n);
+      h5::attr(g, "rho_n_err", r.rho_n_err);
+      h5::attr(g, "a_eff", r.a_eff);
+      h5::attr(g, "Q_prime", r.Q_prime);
+      h5::attr(g, "Q_prime_err", r.Q_prime_err);
+      h5::attr(g, "mean_F_drag", r.mean_F_drag);
+      h5::attr(g, "mean_F_friction", r.mean_F_friction);
+      h5::attr(g, "force_ratio", r.force_ratio);
+      h5::attr(g, "max_overlap_seen", r.max_overlap_seen);
+    }
+    {
+      H5Handle g = h5::create_group(f, "exits");
+      h5::write(g, "time", r.exit_time);
+      h5::write(g, "size", r.exit_size);
+      h5::write(g, "particle", r.exit_particle);
+    }
+    {
+      H5Handle g = h5::create_group(f, "rate");
+      h5::attr(g, "bin_width", r.rate_bin);
+      h5::write(g, "value", r.rate);
+    }
+    {
+      H5Handle g = h5::create_group(f, "profile");
+      h5::write(g, "h", r.profile_h);
+      h5::write(g, "v_g", r.profile_v_g);
+      h5::write(g, "v_g_err", r.profile_v_g_err);
+    }
+    {
+      H5Handle g = h5::create_group(f, "clog_events");
+      std::vector<double> times, detected;
+      if (r.clogged) {
+        times.push_back(r.clog_time);
+        detected.push_back(r.clog_detected_time);
+      }
+      h5::write(g, "time", times);
+      h5::write(g, "detected_time", detected);
+    }
+    {
+      H5Handle g = h5::create_group(f, "run");
+      h5::attr(g, "steps", r.steps);
+      h5::attr(g, "t_end", r.t_end);
+      h5::attr(g, "dt_limiting_term", r.dt_limiting_term);
+      h5::attr(g, "fire_iterations", r.fire_iterations);
+      h5::attr(g, "fire_max_force", r.fire_max_force);
+      h5::attr(g, "reinjections", r.reinjections);
+      h5::attr(g, "reinjection_fallbacks", r.reinjection_fallbacks);
+      h5::attr(g, "wall_seconds", r.wall_seconds);
+      h5::attr(g, "particle_steps_per_second", r.particle_steps_per_second);
+      h5::attr(g, "neighbor_builds", r.neighbor_builds);
+      h5::attr(g, "resumed_times", std::int64_t{r.resumed_times});
+    }
+    H5Fflush(f, H5F_SCOPE_GLOBAL);
+  }
+  commit_atomically(tmp, path);
+}
+
+}  // namespace beverloo

@@ -1,0 +1,110 @@
+#include "neighbor_list.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace beverloo {
+
+template <int D>
+bool NeighborList<D>::moved_beyond_half_skin(const ParticleState<D>& s) const {
+  const double limit2 = 0.25 * skin_ * skin_;
+  const int n = s.size();
+  for (int i = 0; i < n; ++i)
+    if ((s.x[i] - x_ref_[i]).squaredNorm() > limit2) return true;
+  return false;
+}
+
+template <int D>
+void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) {
+  const int n = s.size();
+  force_ = false;
+  ++builds_;
+  x_ref_.assign(s.x.begin(), s.x.end());
+
+  // Per species-pair squared list cutoff (sigma_ij + skin)^2.
+  double cut2[2][2];
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const double c = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]) + skin_;
+      cut2[a][b] = c * c;
+    }
+
+  // Bounding box and grid; a cell is at least the largest list cutoff wide.
+  Vec<D> lo = Vec<D>::Constant(INFINITY), hi = Vec<D>::Constant(-INFINITY);
+  for (int i = 0; i < n; ++i) {
+    lo = lo.cwiseMin(s.x[i]);
+    hi = hi.cwiseMax(s.x[i]);
+  }
+  double cell = std::max(s.sp.sigma[0], s.sp.sigma[1]) + skin_;
+  std::array<int, 3> dims{1, 1, 1};
+  long total = 1;
+  for (;;) {  // a blown-up particle far away must not make the grid huge: coarsen instead
+    total = 1;
+    for (int d = 0; d < D; ++d) {
+      dims[d] = std::max(1, static_cast<int>((hi[d] - lo[d]) / cell) + 1);
+      total *= dims[d];
+    }
+    if (total <= 4L * n + 64) break;
+    cell *= 1.5;
+  }
+  const double inv_cell = 1.0 / cell;
+  cell_of_.resize(n);
+  cell_start_.assign(total + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    int c = 0;
+    for (int d = D - 1; d >= 0; --d) {
+      int k = static_cast<int>((s.x[i][d] - lo[d]) * inv_cell);
+      k = std::min(k, dims[d] - 1);
+      c = c * dims[d] + k;
+    }
+    cell_of_[i] = c;
+    ++cell_start_[c + 1];
+  }
+  for (long c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_items_.resize(n);
+  // fill in index order so that each cell lists its particles in increasing index
+  cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  for (int i = 0; i < n; ++i) cell_items_[cursor_[cell_of_[i]]++] = i;
+
+  row_start_.resize(n + 1);
+  nbr_.clear();
+  wall_mask_.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    row_start_[i] = static_cast<int>(nbr_.size());
+    const Vec<D> xi = s.x[i];
+    const int si = s.species[i];
+    // decode cell coordinates of i
+    int ci[3] = {0, 0, 0};
+    int c = cell_of_[i];
+    for (int d = 0; d < D; ++d) {
+      ci[d] = c % dims[d];
+      c /= dims[d];
+    }
+    const int lo0 = std::max(ci[0] - 1, 0), hi0 = std::min(ci[0] + 1, dims[0] - 1);
+    const int lo1 = std::max(ci[1] - 1, 0), hi1 = std::min(ci[1] + 1, dims[1] - 1);
+    const int lo2 = D == 3 ? std::max(ci[2] - 1, 0) : 0, hi2 = D == 3 ? std::min(ci[2] + 1, dims[2] - 1) : 0;
+    for (int c2 = lo2; c2 <= hi2; ++c2)
+      for (int c1 = lo1; c1 <= hi1; ++c1)
+        for (int c0 = lo0; c0 <= hi0; ++c0) {
+          const int cc = (c2 * dims[1] + c1) * dims[0] + c0;
+          for (int k = cell_start_[cc]; k < cell_start_[cc + 1]; ++k) {
+            const int j = cell_items_[k];
+            if (j <= i) continue;
+            if ((xi - s.x[j]).squaredNorm() < cut2[si][s.species[j]]) nbr_.push_back(j);
+          }
+        }
+    std::sort(nbr_.begin() + row_start_[i], nbr_.end());
+    // walls within reach of this particle until the next build
+    const double reach = 0.5 * s.sp.sigma[si] + skin_;
+    std::uint8_t mask = 0;
+    for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
+      if ((xi - hopper.nearest_point(w, xi)).squaredNorm() < reach * reach) mask |= std::uint8_t(1u << w);
+    wall_mask_[i] = mask;
+  }
+  row_start_[n] = static_cast<int>(nbr_.size());
+}
+
+template class NeighborList<2>;
+template class NeighborList<3>;
+
+}  // namespace beverloo

@@ -1,0 +1,53 @@
+#pragma once
+/// \file neighbor_list.h
+/// \brief Verlet half list with a skin, built through a cell grid: O(N) per build, rebuilt only
+/// when some particle has moved more than half the skin since the last build.
+///
+/// Each row i holds the j > i within sigma_ij + skin, sorted by j. Sorting makes the order in
+/// which pair forces are summed depend only on which pairs overlap, not on when the list was
+/// built, so a run resumed from a checkpoint (which rebuilds the list) stays bit-identical.
+/// The same build records, per particle, which walls are within sigma_i/2 + skin.
+#include <cstdint>
+#include <vector>
+
+#include "../geometry/hopper.h"
+#include "../state.h"
+
+namespace beverloo {
+
+template <int D>
+class NeighborList {
+ public:
+  explicit NeighborList(double skin) : skin_(skin) {}
+
+  /// Rebuild if needed (or if forced); returns true if it rebuilt.
+  bool update(const ParticleState<D>& s, const Hopper<D>& hopper) {
+    if (!force_ && !moved_beyond_half_skin(s)) return false;
+    build(s, hopper);
+    return true;
+  }
+  void build(const ParticleState<D>& s, const Hopper<D>& hopper);
+  /// Forces the next update() to rebuild.
+  void invalidate() { force_ = true; }
+
+  const int* row_begin(int i) const { return nbr_.data() + row_start_[i]; }
+  const int* row_end(int i) const { return nbr_.data() + row_start_[i + 1]; }
+  std::uint8_t wall_mask(int i) const { return wall_mask_[i]; }
+  std::int64_t builds() const { return builds_; }
+  std::size_t pairs() const { return nbr_.size(); }
+  double skin() const { return skin_; }
+
+ private:
+  bool moved_beyond_half_skin(const ParticleState<D>& s) const;
+
+  double skin_;
+  bool force_ = true;
+  std::int64_t builds_ = 0;
+  VecArray<D> x_ref_;
+  std::vector<int> row_start_, nbr_;
+  std::vector<std::uint8_t> wall_mask_;
+  // cell grid (counting sort), kept between builds so that builds allocate nothing
+  std::vector<int> cell_of_, cell_start_, cell_items_, cursor_;
+};
+
+}  // namespace beverloo

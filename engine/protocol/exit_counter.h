@@ -1,0 +1,58 @@
+#pragma once
+/// \file exit_counter.h
+/// \brief Counts a particle as exited once, when its centre crosses the orifice plane, and
+/// reports which exited particles have fallen far enough to be reinjected.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "../geometry/hopper.h"
+#include "../state.h"
+#include "flow_record.h"
+
+namespace beverloo {
+
+/// A run that has become unphysical (NaN, escape, huge overlap). Exit code 3.
+class InstabilityError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+template <int D>
+class ExitCounter {
+ public:
+  ExitCounter(const Hopper<D>& hopper, double drop_depth_diameters, int n)
+      : hopper_(hopper), drop_depth_(drop_depth_diameters) {
+    to_reinject_.reserve(n);
+  }
+  /// Call after the drift of each step at time t. Fills to_reinject().
+  void update(ParticleState<D>& s, double t, FlowRecord& rec) {
+    to_reinject_.clear();
+    const int n = s.size();
+    const double half_w = hopper_.orifice_half_width();
+    for (int i = 0; i < n; ++i) {
+      const double h = s.x[i][kUp<D>];
+      if (!s.exited[i]) {
+        if (h >= 0) continue;
+        if (Hopper<D>::lateral(s.x[i]) > half_w)
+          throw InstabilityError("particle " + std::to_string(i) + " crossed the orifice plane through the wall at t = " +
+                                 std::to_string(t));
+        rec.exit_time.push_back(t);
+        rec.exit_particle.push_back(i);
+        rec.exit_size.push_back(s.sp.ref_size[s.species[i]]);
+        rec.last_exit_time = t;
+        s.exited[i] = 1;
+      } else if (h < -drop_depth_ * s.sigma(i)) {
+        to_reinject_.push_back(i);
+      }
+    }
+  }
+  const std::vector<int>& to_reinject() const { return to_reinject_; }
+
+ private:
+  const Hopper<D>& hopper_;
+  double drop_depth_;
+  std::vector<int> to_reinject_;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,284 @@
+#include "hopper_run.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "../integrate/fire.h"
+#include "../integrate/velocity_verlet.h"
+#include "../io/result_file.h"
+#include "../io/trajectory.h"
+#include "../units.h"
+#include "placement.h"
+
+namespace beverloo {
+namespace {
+
+template <int D>
+Hopper<D> make_hopper(const SimConfig& c) {
+  if constexpr (D == 2)
+    return Hopper<2>(c.W, c.w, units::deg_to_rad(c.theta_w_left_deg), units::deg_to_rad(c.theta_w_right_deg));
+  else
+    return Hopper<3>(c.W, c.w);
+}
+
+std::int64_t steps_for(double time, double dt) { return std::max<std::int64_t>(1, std::llround(time / dt)); }
+
+}  // namespace
+
+template <int D>
+struct HopperRun<D>::Trajectory {
+  H5mdTrajectory<D> writer;
+};
+
+template <int D>
+HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
+    : c_(c),
+      opt_(std::move(options)),
+      ts_(choose_time_step(c)),
+      hopper_(make_hopper<D>(c)),
+      rng_(c.effective_seed()),
+      exits_(hopper_, c.reinjection.drop_depth_diameters, c.N),
+      reinjector_(hopper_, c.reinjection, c.N),
+      obs_(c),
+      estimator_(c.run) {
+  ff_ = std::make_unique<ForceField<D>>(c_, hopper_);
+  rec_.exit_time.reserve(1 << 16);
+  rec_.exit_particle.reserve(1 << 16);
+  rec_.exit_size.reserve(1 << 16);
+  if (opt_.progress == ProgressMode::Auto) opt_.progress = isatty(STDERR_FILENO) ? ProgressMode::Terminal : ProgressMode::Log;
+}
+
+template <int D>
+HopperRun<D>::~HopperRun() = default;
+
+template <int D>
+std::string HopperRun<D>::path(const std::string& name) const {
+  return (std::filesystem::path(opt_.output_dir) / name).string();
+}
+
+template <int D>
+void HopperRun<D>::prepare() {
+  const bool have_dir = !opt_.output_dir.empty();
+  if (have_dir && opt_.resume && std::filesystem::exists(path("checkpoint.h5"))) {
+    load_checkpoint(path("checkpoint.h5"));
+    ++resumed_times_;
+  } else {
+    place_randomly(s_, c_, hopper_, rng_);
+    ff_->set_gravity(0);
+    ff_->set_dissipation(false);
+    const FireResult fr = fire_minimize(s_, *ff_, c_.fire, ts_.dt);
+    fire_iterations_ = fr.iterations;
+    fire_max_force_ = fr.max_force;
+    if (!fr.converged) {
+      std::ostringstream m;
+      m << "FIRE did not remove the initial overlaps: max force " << fr.max_force << " > fire.force_tol "
+        << c_.fire.force_tol << " after " << fr.iterations << " iterations";
+      throw InstabilityError(m.str());
+    }
+    s_.step = 0;
+  }
+  ff_->set_gravity(c_.gravity);
+  ff_->set_dissipation(true);
+  ff_->list().invalidate();
+  // Forces at the start (or the resumed) state: identical to those the uninterrupted run holds,
+  // because the pair sums do not depend on when the list was built (see neighbor_list.h).
+  if (s_.step == 0) ff_->compute(s_);
+  double top = 0;
+  for (int i = 0; i < s_.size(); ++i) top = std::max(top, s_.x[i][kUp<D>]);
+  ceiling_ = 2 * top + 10 * c_.W;
+  if (have_dir && c_.run.trajectory_every_steps > 0)
+    traj_.reset(new Trajectory{H5mdTrajectory<D>(path("trajectory.h5"), c_, s_, top, resumed_times_ ? s_.step : -1)});
+  session_start_ = last_progress_ = std::chrono::steady_clock::now();
+  session_first_step_ = s_.step;
+}
+
+template <int D>
+void HopperRun<D>::step_once() {
+  const double t_next = (s_.step + 1) * ts_.dt;
+  const StepReport r = velocity_verlet_step(s_, *ff_, ts_.dt, [&](ParticleState<D>& st) {
+    exits_.update(st, t_next, rec_);
+    if (!c_.reinject || exits_.to_reinject().empty()) return;
+    ff_->list().update(st, hopper_);  // a list valid for these positions: canonical contact counts
+    ff_->contact().count_contacts(st, contacts_);
+    for (int i : exits_.to_reinject()) {
+      ++rec_.reinjections;
+      if (!reinjector_.reinject(st, i, rng_, contacts_)) ++rec_.reinjection_fallbacks;
+      contacts_[i] = 0;
+    }
+  });
+  if (!r.finite) throw InstabilityError("NaN or infinite position/velocity at t = " + std::to_string(time()));
+  if (r.forces.max_overlap > c_.max_overlap)
+    throw InstabilityError("pair overlap 1 - r/sigma = " + std::to_string(r.forces.max_overlap) + " beyond max_overlap = " +
+                           std::to_string(c_.max_overlap) + " at t = " + std::to_string(time()));
+  rec_.max_overlap_seen = std::max(rec_.max_overlap_seen, r.forces.max_overlap);
+}
+
+template <int D>
+void HopperRun<D>::check_containment() const {
+  for (int i = 0; i < s_.size(); ++i) {
+    if (!hopper_.contains(s_.x[i]) || s_.x[i][kUp<D>] > ceiling_ ||
+        s_.x[i][kUp<D>] < -(c_.reinjection.drop_depth_diameters + 10) * s_.sigma(i)) {
+      std::ostringstream m;
+      m << "particle " << i << " left the container at t = " << time() << " (position " << s_.x[i].transpose() << ")";
+      throw InstabilityError(m.str());
+    }
+  }
+}
+
+template <int D>
+void HopperRun<D>::advance(std::int64_t steps) {
+  for (std::int64_t k = 0; k < steps; ++k) step_once();
+}
+
+template <int D>
+RunResult HopperRun<D>::run() {
+  const double dt = ts_.dt;
+  const std::int64_t sample_steps = steps_for(c_.observables.sample_interval, dt);
+  const std::int64_t check_steps = steps_for(c_.run.check_interval, dt);
+  const std::int64_t ckpt_steps = c_.run.checkpoint_interval > 0 ? steps_for(c_.run.checkpoint_interval, dt) : 0;
+  const std::int64_t traj_steps = c_.run.trajectory_every_steps;
+  const std::int64_t max_steps = std::llround(c_.run.t_max / dt);
+  constexpr std::int64_t kContainmentSteps = 100;
+  const bool files = !opt_.output_dir.empty();
+  FlowRateEstimate est;
+  if (traj_ && s_.step == 0) traj_->writer.write_frame(s_, 0.0);
+
+  while (true) {
+    step_once();
+    const std::int64_t step = s_.step;
+    const double t = time();
+    if (step % sample_steps == 0) {
+      ff_->contact().friction_forces(s_, friction_scratch_);
+      obs_.sample(s_, t, friction_scratch_, c_.zeta);
+    }
+    if (traj_ && step % traj_steps == 0) traj_->writer.write_frame(s_, t);
+    if (step % kContainmentSteps == 0) check_containment();
+    if (t - rec_.last_exit_time >= c_.run.t_clog) {
+      est = estimator_.estimate(rec_, t);
+      return finish("clogged", "no particle exited for t_clog = " + std::to_string(c_.run.t_clog), est);
+    }
+    if (step % check_steps == 0) {
+      est = estimator_.estimate(rec_, t);
+      report_progress(est, false);
+      if (est.valid && est.t_end - est.t_start >= c_.run.min_window && est.rel_err() <= c_.run.target_rel_err)
+        return finish("converged", "relative error of Q reached run.target_rel_err", est);
+    }
+    if (step >= max_steps) {
+      est = estimator_.estimate(rec_, t);
+      return finish("time_limit", "reached run.t_max before the error target", est);
+    }
+    if (files && ckpt_steps && step % ckpt_steps == 0) save_checkpoint(path("checkpoint.h5"));
+    if (opt_.stop_request && opt_.stop_request->load(std::memory_order_relaxed)) {
+      if (files) save_checkpoint(path("checkpoint.h5"));
+      RunResult r;
+      r.status = "interrupted";
+      r.stop_reason = "stopped by a signal at t = " + std::to_string(t) + "; checkpoint written";
+      r.steps = step;
+      r.t_end = t;
+      if (opt_.progress == ProgressMode::Terminal) std::fputc('\n', stderr);
+      return r;
+    }
+    if (opt_.progress == ProgressMode::Terminal && (step & 1023) == 0) report_progress(est, false);
+  }
+}
+
+template <int D>
+void HopperRun<D>::report_progress(const FlowRateEstimate& e, bool force) {
+  if (opt_.progress == ProgressMode::Quiet) return;
+  const auto now = std::chrono::steady_clock::now();
+  const double since = std::chrono::duration<double>(now - last_progress_).count();
+  const bool terminal = opt_.progress == ProgressMode::Terminal;
+  if (!force && since < (terminal ? 0.25 : 10.0)) return;
+  last_progress_ = now;
+  const double wall = std::chrono::duration<double>(now - session_start_).count();
+  const double rate = wall > 0 ? (s_.step - session_first_step_) * double(s_.size()) / wall : 0;
+  char line[256];
+  std::snprintf(line, sizeof line, "t = %.1f / %.0f  exits %lld  Q = %.4g +- %.2g (%.1f%%)  window %.0f-%.0f  %.3g particle-steps/s",
+                time(), c_.run.t_max, static_cast<long long>(rec_.exit_time.size()), e.Q, e.Q_err,
+                e.Q > 0 ? 100 * e.Q_err / e.Q : 0.0, e.t_start, e.t_end, rate);
+  if (terminal)
+    std::fprintf(stderr, "\r\033[K%s", line);
+  else
+    std::fprintf(stderr, "[beverloo] %s\n", line);
+  std::fflush(stderr);
+}
+
+template <int D>
+RunResult HopperRun<D>::finish(const std::string& status, const std::string& reason, const FlowRateEstimate& e) {
+  RunResult r;
+  r.status = status;
+  r.stop_reason = reason;
+  r.clogged = status == "clogged";
+  if (r.clogged) {
+    r.clog_time = rec_.last_exit_time;
+    r.clog_detected_time = time();
+  }
+  // A clogged run has Q = 0 (physics.md 7); its pre-clog rate stays visible in the rate series.
+  r.Q = r.clogged ? 0 : e.Q;
+  r.Q_err = r.clogged ? 0 : e.Q_err;
+  r.Q_rel_err = (r.Q > 0) ? r.Q_err / r.Q : 0;
+  r.window_start = e.t_start;
+  r.window_end = e.t_end;
+  r.exits_in_window = e.exits_in_window;
+  r.exits_total = static_cast<std::int64_t>(rec_.exit_time.size());
+  const ObservableSummary o = obs_.summarize(e.t_start);
+  r.rho_n = o.rho_n;
+  r.rho_n_err = o.rho_n_err;
+  r.a_eff = o.rho_n > 0 ? 1.0 / o.rho_n : 0;
+  const double a_avg = s_.sp.mean_ref_size();
+  r.Q_prime = r.Q * r.a_eff / a_avg;
+  r.Q_prime_err = r.Q_err * r.a_eff / a_avg;
+  r.mean_F_drag = o.mean_F_drag;
+  r.mean_F_friction = o.mean_F_friction;
+  r.force_ratio = o.mean_F_friction > 0 ? o.mean_F_drag / o.mean_F_friction : INFINITY;
+  r.profile_h = o.h;
+  r.profile_v_g = o.v_g;
+  r.profile_v_g_err = o.v_g_err;
+  r.rate_bin = c_.run.rate_bin;
+  r.rate = estimator_.rates();
+  r.exit_time = rec_.exit_time;
+  r.exit_size = rec_.exit_size;
+  r.exit_particle = rec_.exit_particle;
+  r.dt = ts_.dt;
+  r.dt_limiting_term = ts_.period_term;
+  r.seed = c_.effective_seed();
+  r.steps = s_.step;
+  r.t_end = time();
+  r.fire_iterations = fire_iterations_;
+  r.fire_max_force = fire_max_force_;
+  r.reinjections = rec_.reinjections;
+  r.reinjection_fallbacks = rec_.reinjection_fallbacks;
+  r.max_overlap_seen = rec_.max_overlap_seen;
+  const double session = std::chrono::duration<double>(std::chrono::steady_clock::now() - session_start_).count();
+  r.wall_seconds = wall_seconds_before_ + session;
+  r.particle_steps_per_second = session > 0 ? (s_.step - session_first_step_) * double(s_.size()) / session : 0;
+  r.neighbor_builds = ff_->list().builds();
+  r.resumed_times = resumed_times_;
+  report_progress(e, true);
+  if (opt_.progress == ProgressMode::Terminal) std::fputc('\n', stderr);
+  if (!opt_.output_dir.empty()) {
+    write_result_file(path("result.h5"), c_, r);
+    write_text_atomically(path("summary.json"), r.summary_json().dump(2) + "\n");
+  }
+  return r;
+}
+
+RunResult run_hopper(const SimConfig& c, const RunOptions& options) {
+  if (c.dimension == 2) {
+    HopperRun<2> run(c, options);
+    run.prepare();
+    return run.run();
+  }
+  HopperRun<3> run(c, options);
+  run.prepare();
+  return run.run();
+}
+
+template class HopperRun<2>;
+template class HopperRun<3>;
+
+}  // namespace beverloo

@@ -1,0 +1,97 @@
+#pragma once
+/// \file hopper_run.h
+/// \brief The hopper-flow protocol of physics.md 6 as a short driver over its components:
+/// place at random, FIRE with gravity off, gravity on, flow with exits counted and particles
+/// reinjected, measure until the error target, the time limit or a clog.
+///
+/// Every decision is taken at fixed step numbers (samples, checks, checkpoints), never by the
+/// wall clock, so a run is a pure function of its parameters and seed, also across a resume.
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "../config.h"
+#include "../forces/force_field.h"
+#include "../geometry/hopper.h"
+#include "../integrate/time_step.h"
+#include "../rng.h"
+#include "exit_counter.h"
+#include "flow_rate.h"
+#include "observables.h"
+#include "reinjector.h"
+#include "run_result.h"
+
+namespace beverloo {
+
+enum class ProgressMode { Auto, Terminal, Log, Quiet };
+
+struct RunOptions {
+  std::string output_dir;  ///< where checkpoint.h5, result.h5, summary.json go; empty: nowhere
+  bool resume = false;     ///< continue from output_dir/checkpoint.h5 if it exists
+  ProgressMode progress = ProgressMode::Quiet;
+  /// Set asynchronously (signal handler): checkpoint at the end of the current step and stop.
+  const std::atomic<bool>* stop_request = nullptr;
+};
+
+template <int D>
+class HopperRun {
+ public:
+  HopperRun(const SimConfig& c, RunOptions options);
+  ~HopperRun();
+
+  /// Placement, FIRE and gravity on; or the checkpoint's state when resuming.
+  void prepare();
+  /// Flows until a stopping rule holds; writes result.h5 and summary.json if there is a directory.
+  RunResult run();
+  /// Advances the flow by exactly `steps` steps without the stopping rules (benchmarks, tests).
+  void advance(std::int64_t steps);
+
+  ParticleState<D>& state() { return s_; }
+  ForceField<D>& forces() { return *ff_; }
+  const Hopper<D>& hopper() const { return hopper_; }
+  const FlowRecord& record() const { return rec_; }
+  const TimeStepChoice& time_step() const { return ts_; }
+  double time() const { return s_.step * ts_.dt; }
+
+  void save_checkpoint(const std::string& path) const;
+  void load_checkpoint(const std::string& path);
+
+ private:
+  void step_once();
+  void check_containment() const;
+  RunResult finish(const std::string& status, const std::string& reason, const FlowRateEstimate& e);
+  void report_progress(const FlowRateEstimate& e, bool force);
+  std::string path(const std::string& name) const;
+
+  SimConfig c_;
+  RunOptions opt_;
+  TimeStepChoice ts_;
+  Hopper<D> hopper_;
+  ParticleState<D> s_;
+  std::unique_ptr<ForceField<D>> ff_;
+  Rng rng_;
+  FlowRecord rec_;
+  ExitCounter<D> exits_;
+  Reinjector<D> reinjector_;
+  FlowObservables<D> obs_;
+  FlowRateEstimator estimator_;
+  VecArray<D> friction_scratch_;
+  std::vector<std::uint16_t> contacts_;
+  std::int64_t fire_iterations_ = 0;
+  double fire_max_force_ = 0;
+  double ceiling_ = 0;            ///< a particle above this height has escaped upward
+  double wall_seconds_before_ = 0;  ///< from earlier sessions (resume)
+  int resumed_times_ = 0;
+  std::chrono::steady_clock::time_point session_start_, last_progress_;
+  std::int64_t session_first_step_ = 0;
+  struct Trajectory;
+  std::unique_ptr<Trajectory> traj_;
+};
+
+/// Runs one job of either dimension (dispatch on c.dimension).
+RunResult run_hopper(const SimConfig& c, const RunOptions& options);
+
+}  // namespace beverloo

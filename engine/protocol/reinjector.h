@@ -1,0 +1,38 @@
+#pragma once
+/// \file reinjector.h
+/// \brief Puts an exited particle back on top of the pile (physics.md 6.4): touching one of the
+/// topmost particles (centre distance exactly sigma_mn), overlapping no other particle and no
+/// wall, with the velocity of the particle it touches. N stays fixed.
+///
+/// The particle to touch is drawn from the pile (particles with at least `min_contacts`
+/// overlapping contacts) within `top_band` of the pile's highest particle, the direction uniformly from the upper half circle (2D) or hemisphere (3D). If
+/// `max_attempts` draws all collide, the particle is dropped just above the pile instead
+/// (counted as a fallback, so that a run can report how often that happened).
+#include <vector>
+
+#include "../config.h"
+#include "../geometry/hopper.h"
+#include "../rng.h"
+#include "../state.h"
+
+namespace beverloo {
+
+template <int D>
+class Reinjector {
+ public:
+  Reinjector(const Hopper<D>& hopper, const ReinjectionParams& p, int n) : hopper_(hopper), p_(p) {
+    candidates_.reserve(n);
+  }
+  /// Places particle i; returns false if the fallback placement was used.
+  /// contacts: overlapping partners per particle (SpContact::count_contacts).
+  bool reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint16_t>& contacts);
+  /// True if particle i at position p overlaps no other particle and no wall.
+  bool is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching) const;
+
+ private:
+  const Hopper<D>& hopper_;
+  ReinjectionParams p_;
+  std::vector<int> candidates_;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,10 @@
+#pragma once
+/// \file commands.h
+/// \brief Subcommand registration: each adds itself to the CLI11 app.
+#include <CLI/CLI.hpp>
+
+namespace beverloo {
+/// Each returns a function that runs the command after parsing and returns the exit code.
+void add_simulate_command(CLI::App& app, int& exit_status);
+void add_bench_command(CLI::App& app, int& exit_status);
+}  // namespace beverloo

@@ -1,0 +1,23 @@
+// beverloo: hopper flows of soft and deformable particles. One binary, subcommands.
+#include <iostream>
+
+#include "commands.h"
+#include "engine/io/h5.h"
+#include "exit_codes.h"
+
+int main(int argc, char** argv) {
+  beverloo::h5::silence_errors();
+  CLI::App app{"beverloo " BEVERLOO_VERSION " - hopper flows of soft and deformable particles"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", BEVERLOO_VERSION);
+  int status = beverloo::exit_code::kOk;
+  beverloo::add_simulate_command(app, status);
+  beverloo::add_bench_command(app, status);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : beverloo::exit_code::kConfig;
+  }
+  return status;
+}

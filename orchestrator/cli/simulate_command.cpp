@@ -1,0 +1,146 @@
+// `beverloo simulate JOB.json [-o DIR] [--resume] [--overwrite] [--json]`: one engine run, no database.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "commands.h"
+#include "engine/integrate/time_step.h"
+#include "engine/io/h5.h"
+#include "engine/protocol/hopper_run.h"
+#include "exit_codes.h"
+#include "signals.h"
+
+namespace beverloo {
+namespace fs = std::filesystem;
+namespace {
+
+struct SimulateArgs {
+  std::string job_path;
+  std::string out_dir;
+  bool resume = false;
+  bool overwrite = false;
+  bool json = false;
+  std::string progress = "auto";
+};
+
+SimConfig read_job(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path, "cannot read the job file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ConfigError(path, std::string("is not valid JSON: ") + e.what());
+  }
+  return SimConfig::from_json(j);
+}
+
+void print_summary(const RunResult& r, const SimConfig& c) {
+  std::printf("status        %s (%s)\n", r.status.c_str(), r.stop_reason.c_str());
+  std::printf("Q             %.6g +- %.3g (%.2f%%)  [sigma_avg^%d / t0]\n", r.Q, r.Q_err, 100 * r.Q_rel_err, c.dimension);
+  std::printf("window        %.1f .. %.1f t0, %lld exits in window, %lld in all\n", r.window_start, r.window_end,
+              static_cast<long long>(r.exits_in_window), static_cast<long long>(r.exits_total));
+  if (r.clogged) std::printf("clog          last exit at t = %.1f, detected at t = %.1f\n", r.clog_time, r.clog_detected_time);
+  std::printf("rho_n         %.4g +- %.2g   Q' = %.6g\n", r.rho_n, r.rho_n_err, r.Q_prime);
+  std::printf("|F_drag|      %.4g   |F_friction| %.4g   ratio %.4g\n", r.mean_F_drag, r.mean_F_friction, r.force_ratio);
+  std::printf("dt            %.4g (limited by %s), %lld steps, seed %llu\n", r.dt, r.dt_limiting_term.c_str(),
+              static_cast<long long>(r.steps), static_cast<unsigned long long>(r.seed));
+  std::printf("speed         %.3g particle-steps/s, %.1f s wall\n", r.particle_steps_per_second, r.wall_seconds);
+}
+
+int run_simulate(const SimulateArgs& a) {
+  SimConfig c;
+  try {
+    c = read_job(a.job_path);
+    (void)choose_time_step(c);  // refuse an unstable explicit dt before anything is written
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
+    return exit_code::kConfig;
+  }
+  const std::string dir = a.out_dir.empty() ? (fs::path("out") / fs::path(a.job_path).stem()).string() : a.out_dir;
+  const fs::path result = fs::path(dir) / "result.h5", checkpoint = fs::path(dir) / "checkpoint.h5";
+  try {
+    if (!a.resume && (fs::exists(result) || fs::exists(checkpoint))) {
+      if (!a.overwrite) {
+        std::fprintf(stderr,
+                     "beverloo simulate: %s already holds a run; use --resume to continue it or --overwrite to start over\n",
+                     dir.c_str());
+        return exit_code::kConfig;
+      }
+      for (const char* name : {"result.h5", "checkpoint.h5", "summary.json", "failure.json", "trajectory.h5"})
+        fs::remove(fs::path(dir) / name);
+    }
+    if (a.resume && fs::exists(result)) {
+      H5Handle f = h5::open_file(result.string());
+      H5Handle p = h5::open_group(f, "parameters");
+      if (h5::attr_string(p, "job_json") != c.to_json().dump()) {
+        std::fprintf(stderr, "beverloo simulate: %s holds the result of a different job\n", dir.c_str());
+        return exit_code::kConfig;
+      }
+      std::fprintf(stderr, "beverloo simulate: %s is already complete\n", dir.c_str());
+      return exit_code::kOk;
+    }
+    fs::create_directories(dir);
+    write_text_atomically((fs::path(dir) / "job.json").string(), c.to_json().dump(2) + "\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beverloo simulate: I/O error: %s\n", e.what());
+    return exit_code::kIo;
+  }
+
+  RunOptions opt;
+  opt.output_dir = dir;
+  opt.resume = a.resume;
+  opt.progress = a.progress == "terminal" ? ProgressMode::Terminal
+                 : a.progress == "log"    ? ProgressMode::Log
+                 : a.progress == "quiet"  ? ProgressMode::Quiet
+                                          : ProgressMode::Auto;
+  opt.stop_request = install_stop_handlers();
+  auto record_failure = [&](const char* cls, const std::string& message) {
+    try {
+      nlohmann::json j = {{"status", "failed"}, {"failure_class", cls}, {"message", message}};
+      write_text_atomically((fs::path(dir) / "failure.json").string(), j.dump(2) + "\n");
+    } catch (...) {
+    }
+  };
+  try {
+    const RunResult r = run_hopper(c, opt);
+    if (r.status == "interrupted") {
+      std::fprintf(stderr, "beverloo simulate: %s\n", r.stop_reason.c_str());
+      return exit_code::kInterrupted;
+    }
+    if (a.json)
+      std::cout << r.summary_json().dump(2) << "\n";
+    else
+      print_summary(r, c);
+    return exit_code::kOk;
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
+    return exit_code::kConfig;
+  } catch (const InstabilityError& e) {
+    std::fprintf(stderr, "\nbeverloo simulate: unstable run: %s\n", e.what());
+    record_failure("blow_up", e.what());
+    return exit_code::kUnstable;
+  } catch (const IoError& e) {
+    std::fprintf(stderr, "\nbeverloo simulate: I/O error: %s\n", e.what());
+    record_failure("io", e.what());
+    return exit_code::kIo;
+  }
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app, int& exit_status) {
+  auto args = std::make_shared<SimulateArgs>();
+  CLI::App* cmd = app.add_subcommand("simulate", "Run one hopper flow from a job file (no database)");
+  cmd->add_option("JOB", args->job_path, "job file (JSON)")->required();
+  cmd->add_option("-o,--output", args->out_dir, "output directory (default: out/<job name>)");
+  cmd->add_flag("--resume", args->resume, "continue from DIR/checkpoint.h5 if present");
+  cmd->add_flag("--overwrite", args->overwrite, "discard a run already in DIR");
+  cmd->add_flag("--json", args->json, "print the result summary as JSON");
+  cmd->add_option("--progress", args->progress, "auto | terminal | log | quiet")
+      ->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));
+  cmd->callback([args, &exit_status] { exit_status = run_simulate(*args); });
+}
+
+}  // namespace beverloo

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs every Debian package beverloo needs to build, test and report.
+# Idempotent: packages already present are skipped; safe to run as root on a fresh machine.
+set -euo pipefail
+
+PACKAGES=(
+  g++ cmake ninja-build pkg-config        # toolchain
+  libeigen3-dev                           # small fixed-size vectors
+  nlohmann-json3-dev                      # job and sweep files
+  libhdf5-dev hdf5-tools                  # results, checkpoints, trajectories; h5dump for users
+  libgsl-dev                              # nonlinear fits (reports)
+  libsqlite3-dev sqlite3                  # campaign store
+  libcli11-dev                            # command line
+  libgtest-dev googletest                 # tests
+  gnuplot-nox                             # figures
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

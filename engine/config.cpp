@@ -135,6 +135,7 @@ SimConfig SimConfig::from_json(const json& j) {
     fr.number("dt_max_factor", c.fire.dt_max_factor);
     fr.number("force_tol", c.fire.force_tol);
     fr.integer("max_iter", c.fire.max_iter);
+    fr.number("max_pair_stiffness", c.fire.max_pair_stiffness);
     fr.reject_unknown();
   }
   if (const json* run = r.object("run")) {
@@ -210,6 +211,7 @@ void SimConfig::resolve_and_validate() {
   require(fire.dt_max_factor >= 1, "fire.dt_max_factor", "must be >= 1");
   require(fire.force_tol > 0, "fire.force_tol", "must be > 0");
   require(fire.max_iter > 0, "fire.max_iter", "must be > 0");
+  require(fire.max_pair_stiffness > 0, "fire.max_pair_stiffness", "must be > 0");
   require(run.t_max > 0, "run.t_max", "must be > 0, got " + num(run.t_max));
   require(run.target_rel_err > 0 && run.target_rel_err < 1, "run.target_rel_err", "must be in (0, 1)");
   require(run.t_clog > 0, "run.t_clog", "must be > 0");
@@ -256,7 +258,7 @@ nlohmann::json SimConfig::to_json() const {
   j["replica"] = replica;
   j["fire"] = {{"alpha0", fire.alpha0}, {"f_inc", fire.f_inc}, {"f_dec", fire.f_dec}, {"f_alpha", fire.f_alpha},
                {"n_min", fire.n_min}, {"dt_max_factor", fire.dt_max_factor}, {"force_tol", fire.force_tol},
-               {"max_iter", fire.max_iter}};
+               {"max_iter", fire.max_iter}, {"max_pair_stiffness", fire.max_pair_stiffness}};
   j["run"] = {{"t_max", run.t_max}, {"target_rel_err", run.target_rel_err}, {"t_clog", run.t_clog},
               {"min_transient", run.min_transient}, {"min_window", run.min_window},
               {"check_interval", run.check_interval}, {"rate_bin", run.rate_bin},

@@ -35,6 +35,10 @@ struct FireParams {
   double dt_max_factor = 10.0;  ///< dt_max = dt_max_factor * dt
   double force_tol = 1e-6;      ///< stop when max |F| (code units) falls below this
   std::int64_t max_iter = 2000000;
+  /// FIRE removes the initial overlaps with E = min(E_sp, this): with E_sp = 1e5 the random
+  /// placement's overlaps push harder than the walls (E_w = 1e4) can hold and particles end up
+  /// outside. The minimum FIRE reaches (no overlaps) does not depend on this stiffness.
+  double max_pair_stiffness = 100.0;
 };
 
 /// Run controls: when to stop, what to write. Times in t0.

@@ -68,9 +68,13 @@ void HopperRun<D>::prepare() {
     ++resumed_times_;
   } else {
     place_randomly(s_, c_, hopper_, rng_);
-    ff_->set_gravity(0);
-    ff_->set_dissipation(false);
-    const FireResult fr = fire_minimize(s_, *ff_, c_.fire, ts_.dt);
+    set_ceiling();
+    SimConfig soft = c_;
+    soft.E_sp = std::min(c_.E_sp, c_.fire.max_pair_stiffness);
+    ForceField<D> minimiser_forces(soft, hopper_);
+    minimiser_forces.set_gravity(0);
+    minimiser_forces.set_dissipation(false);
+    const FireResult fr = fire_minimize(s_, minimiser_forces, c_.fire, ts_.dt);
     fire_iterations_ = fr.iterations;
     fire_max_force_ = fr.max_force;
     if (!fr.converged) {
@@ -79,6 +83,7 @@ void HopperRun<D>::prepare() {
         << c_.fire.force_tol << " after " << fr.iterations << " iterations";
       throw InstabilityError(m.str());
     }
+    check_containment();
     s_.step = 0;
   }
   ff_->set_gravity(c_.gravity);
@@ -87,13 +92,19 @@ void HopperRun<D>::prepare() {
   // Forces at the start (or the resumed) state: identical to those the uninterrupted run holds,
   // because the pair sums do not depend on when the list was built (see neighbor_list.h).
   if (s_.step == 0) ff_->compute(s_);
-  double top = 0;
-  for (int i = 0; i < s_.size(); ++i) top = std::max(top, s_.x[i][kUp<D>]);
-  ceiling_ = 2 * top + 10 * c_.W;
+  const double top = set_ceiling();
   if (have_dir && c_.run.trajectory_every_steps > 0)
     traj_.reset(new Trajectory{H5mdTrajectory<D>(path("trajectory.h5"), c_, s_, top, resumed_times_ ? s_.step : -1)});
   session_start_ = last_progress_ = std::chrono::steady_clock::now();
   session_first_step_ = s_.step;
+}
+
+template <int D>
+double HopperRun<D>::set_ceiling() {
+  double top = 0;
+  for (int i = 0; i < s_.size(); ++i) top = std::max(top, s_.x[i][kUp<D>]);
+  ceiling_ = 2 * top + 10 * c_.W;
+  return top;
 }
 
 template <int D>

@@ -62,6 +62,8 @@ class HopperRun {
  private:
   void step_once();
   void check_containment() const;
+  /// Height above which a particle counts as escaped upward; returns the current top.
+  double set_ceiling();
   RunResult finish(const std::string& status, const std::string& reason, const FlowRateEstimate& e);
   void report_progress(const FlowRateEstimate& e, bool force);
   std::string path(const std::string& name) const;

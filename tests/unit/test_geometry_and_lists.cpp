@@ -1,0 +1,89 @@
+// Hopper walls (nearest points, corners, containment) and the Verlet list against brute force.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "support.h"
+
+namespace beverloo {
+namespace {
+using testing::hopper_for;
+using testing::random_state;
+using testing::small_config;
+
+TEST(Hopper2D, FunnelWallsMeetSideWallsAtTheStatedHeight) {
+  const Hopper<2> h(50, 6, units::deg_to_rad(60), units::deg_to_rad(30));
+  // (W - w)/2 cot(theta): 22 cot 60 = 12.70, 22 cot 30 = 38.11
+  EXPECT_NEAR(h.nearest_point(2, Vec<2>(-30, -100))[1], 22 / std::tan(units::deg_to_rad(60)), 1e-12);
+  EXPECT_NEAR(h.nearest_point(3, Vec<2>(30, -100))[1], 22 / std::tan(units::deg_to_rad(30)), 1e-12);
+  EXPECT_NEAR(h.funnel_top(), 22 / std::tan(units::deg_to_rad(30)), 1e-12);
+  // flat bottom: the funnel walls are at height 0
+  const Hopper<2> flat(50, 6, units::deg_to_rad(90), units::deg_to_rad(90));
+  EXPECT_DOUBLE_EQ(flat.funnel_top(), 0);
+  EXPECT_EQ(flat.nearest_point(0, Vec<2>(-10, 2)), Vec<2>(-10, 0));
+}
+
+TEST(Hopper2D, OrificeEdgesAreCorners) {
+  const Hopper<2> h(50, 6, units::pi / 2, units::pi / 2);
+  // inside the orifice, the nearest point of each funnel wall is its end point
+  EXPECT_EQ(h.nearest_point(0, Vec<2>(-2.8, 0.1)), Vec<2>(-3, 0));
+  EXPECT_EQ(h.nearest_point(1, Vec<2>(2.9, -0.2)), Vec<2>(3, 0));
+  EXPECT_TRUE(h.contains(Vec<2>(0, 5)));
+  EXPECT_TRUE(h.contains(Vec<2>(10, -1)));  // below the plane: judged when it crosses
+  EXPECT_FALSE(h.contains(Vec<2>(26, 5)));
+  const Hopper<2> funnel(50, 6, units::deg_to_rad(45), units::deg_to_rad(45));
+  EXPECT_TRUE(funnel.contains(Vec<2>(3.5, 1)));
+  EXPECT_FALSE(funnel.contains(Vec<2>(4.5, 1)));  // outside the 45 degree wall
+}
+
+TEST(Hopper3D, BaseAnnulusRimAndMantle) {
+  const Hopper<3> h(25, 6);
+  EXPECT_EQ(h.nearest_point(0, Vec<3>(5, 0, 0.3)), Vec<3>(5, 0, 0));     // on the base
+  EXPECT_EQ(h.nearest_point(0, Vec<3>(0, 2, 0.3)), Vec<3>(0, 3, 0));     // rim (corner)
+  EXPECT_EQ(h.nearest_point(1, Vec<3>(0, 12, 4)), Vec<3>(0, 12.5, 4));   // mantle
+  EXPECT_EQ(h.nearest_point(1, Vec<3>(12, 0, -1)), Vec<3>(12.5, 0, 0));  // mantle's bottom rim
+  EXPECT_TRUE(h.contains(Vec<3>(12, 0, 3)));
+  EXPECT_FALSE(h.contains(Vec<3>(9, 9, 3)));
+}
+
+template <int D>
+void check_list_against_brute_force(int n, std::uint64_t seed) {
+  SimConfig c = small_config(D, n, 3.0);
+  const Hopper<D> h = hopper_for<D>(c);
+  ParticleState<D> s = random_state<D>(c, h, seed);
+  NeighborList<D> list(c.skin);
+  list.build(s, h);
+  std::set<std::pair<int, int>> listed;
+  for (int i = 0; i < n; ++i) {
+    int prev = -1;
+    for (const int* p = list.row_begin(i); p != list.row_end(i); ++p) {
+      EXPECT_GT(*p, i);
+      EXPECT_GT(*p, prev) << "rows must be sorted";
+      prev = *p;
+      listed.insert({i, *p});
+    }
+  }
+  // every pair within sigma_ij + skin is listed; every listed pair is within it
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const double cut = 0.5 * (s.sigma(i) + s.sigma(j)) + c.skin;
+      const bool near = (s.x[i] - s.x[j]).norm() < cut;
+      EXPECT_EQ(near, listed.count({i, j}) == 1) << i << " " << j;
+    }
+  // after moving everybody less than half the skin, every overlapping pair is still listed
+  Rng rng(seed + 5);
+  for (auto& x : s.x)
+    for (int d = 0; d < D; ++d) x[d] += rng.uniform(-0.49, 0.49) * c.skin / std::sqrt(double(D));
+  EXPECT_FALSE(list.update(s, h)) << "no rebuild needed";
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if ((s.x[i] - s.x[j]).norm() < 0.5 * (s.sigma(i) + s.sigma(j))) EXPECT_EQ(listed.count({i, j}), 1u);
+  s.x[0][0] += c.skin;  // one particle moved more than half the skin
+  EXPECT_TRUE(list.update(s, h));
+}
+
+TEST(NeighborList, MatchesBruteForce2D) { check_list_against_brute_force<2>(400, 1); }
+TEST(NeighborList, MatchesBruteForce3D) { check_list_against_brute_force<3>(500, 2); }
+
+}  // namespace
+}  // namespace beverloo

@@ -13,6 +13,7 @@ PACKAGES=(
   libcli11-dev                            # command line
   libgtest-dev googletest                 # tests
   gnuplot-nox                             # figures
+  python3-h5py python3-numpy              # tests read result files the way users do (h5py)
 )
 
 missing=()

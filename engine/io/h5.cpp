@@ -141,6 +141,7 @@ std::string attr_string(hid_t loc, const std::string& name) {
   std::string out(size, '\0');
   H5Handle mem(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(mem, size);
+  H5Tset_cset(mem, H5Tget_cset(type));  // HDF5 does not convert between ASCII and UTF-8
   if (H5Aread(a, mem, out.data()) < 0) fail("read attribute " + name);
   while (!out.empty() && out.back() == '\0') out.pop_back();
   return out;

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Bad job files: exit 2, a message naming the field, and nothing written.
+source "$(dirname "$0")/lib.sh"
+check() {  # name, expected text in the message, job json
+  local name=$1 expect=$2 job=$3
+  echo "$job" > "$WORK/$name.json"
+  set +e
+  "$BIN" simulate "$WORK/$name.json" -o "$WORK/out-$name" --progress quiet 2> "$WORK/err"
+  local rc=$?
+  set -e
+  [ "$rc" -eq 2 ] || fail "$name: exit $rc, expected 2"
+  grep -q -- "$expect" "$WORK/err" || fail "$name: message does not name '$expect': $(cat "$WORK/err")"
+  [ ! -e "$WORK/out-$name" ] || fail "$name: wrote $WORK/out-$name"
+  echo "ok  $name: $(cat "$WORK/err")"
+}
+check missing_w   "w: is required"          '{"zeta": 0.3, "mu": 0}'
+check negative_w  "w: must be > 0"          '{"w": -2, "zeta": 0.3, "mu": 0}'
+check typo        "run.tmax: unknown field" '{"w": 6, "zeta": 0.3, "mu": 0, "run": {"tmax": 10}}'
+check dt_too_big  "dt: 0.002 is unstable for E_sp" '{"w": 6, "zeta": 0.3, "mu": 0, "E_sp": 1e5, "dt": 0.002}'
+check bad_json    "is not valid JSON"       '{"w": 6, '
+check angle       "theta_w_left_deg"        '{"w": 6, "zeta": 0.3, "mu": 0, "theta_w_deg": 120}'
+check model       "model"                   '{"w": 6, "zeta": 0.3, "mu": 0, "model": "lj"}'
+# an existing run is not silently overwritten
+echo '{"w": 6, "zeta": 0.3, "mu": 0, "N": 100, "W": 12, "run": {"t_max": 2, "min_window": 1, "rate_bin": 0.1, "min_transient": 0}}' > "$WORK/ok.json"
+"$BIN" simulate "$WORK/ok.json" -o "$WORK/ok" --progress quiet > /dev/null
+set +e; "$BIN" simulate "$WORK/ok.json" -o "$WORK/ok" --progress quiet 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q -- "--resume" "$WORK/err" || fail "second run into the same directory must be refused (rc $rc)"
+echo "all config error checks passed"

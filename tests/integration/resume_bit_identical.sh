@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# SIGKILL at arbitrary moments, then --resume until done: the result equals, bit for bit, a
+# run that was never interrupted. Also SIGTERM: checkpoint, exit 5, resume, same result.
+source "$(dirname "$0")/lib.sh"
+cat > "$WORK/job.json" <<'JOB'
+{"dimension": 2, "N": 400, "W": 16, "w": 5, "E_sp": 100, "zeta": 0.3, "mu": 1.0,
+ "run": {"t_max": 150, "target_rel_err": 1e-9, "min_window": 20, "checkpoint_interval": 3,
+         "trajectory_every_steps": 5000}}
+JOB
+start=$(date +%s.%N)
+"$BIN" simulate "$WORK/job.json" -o "$WORK/clean" --progress quiet > /dev/null
+took=$(echo "$(date +%s.%N) - $start" | bc)
+echo "uninterrupted run: ${took}s"
+
+# killed twice at random moments, then resumed to the end
+kills=0
+for delay in 0.6 0.9; do
+  "$BIN" simulate "$WORK/job.json" -o "$WORK/killed" --resume --progress quiet > /dev/null 2>&1 &
+  pid=$!
+  sleep "$delay"
+  if kill -9 "$pid" 2>/dev/null; then kills=$((kills + 1)); fi
+  wait "$pid" 2>/dev/null || true
+done
+[ "$kills" -ge 1 ] || fail "the run finished before it could be killed; make the job longer"
+[ -f "$WORK/killed/checkpoint.h5" ] || fail "no checkpoint after the kills"
+[ ! -f "$WORK/killed/result.h5" ] || fail "a killed run left a result"
+"$BIN" simulate "$WORK/job.json" -o "$WORK/killed" --resume --progress quiet > /dev/null
+resumed=$(h5dump -a /run/resumed_times "$WORK/killed/result.h5" | grep -o '(0): [0-9]*' | grep -o '[0-9]*$')
+[ "$resumed" -ge 1 ] || fail "the final run did not resume from a checkpoint"
+diff <(result_data "$WORK/clean/result.h5") <(result_data "$WORK/killed/result.h5") > "$WORK/diff" \
+  || { head -40 "$WORK/diff"; fail "resumed result differs from the uninterrupted one"; }
+diff <(h5dump -d /particles/all/position/step "$WORK/clean/trajectory.h5" | tail -n +2) \
+     <(h5dump -d /particles/all/position/step "$WORK/killed/trajectory.h5" | tail -n +2) > /dev/null \
+  || fail "trajectory frames differ after resume"
+echo "ok  SIGKILL x$kills + resume ($resumed resumes): bit-identical result"
+
+# SIGTERM: checkpoint at once, exit 5, then resume
+"$BIN" simulate "$WORK/job.json" -o "$WORK/term" --progress quiet > /dev/null 2>&1 &
+pid=$!
+sleep 0.7
+kill -TERM "$pid"
+set +e; wait "$pid"; rc=$?; set -e
+[ "$rc" -eq 5 ] || fail "SIGTERM: exit $rc, expected 5"
+[ -f "$WORK/term/checkpoint.h5" ] || fail "SIGTERM left no checkpoint"
+"$BIN" simulate "$WORK/job.json" -o "$WORK/term" --resume --progress quiet > /dev/null
+diff <(result_data "$WORK/clean/result.h5") <(result_data "$WORK/term/result.h5") > /dev/null \
+  || fail "result after SIGTERM + resume differs"
+echo "ok  SIGTERM: exit 5, resume: bit-identical result"
+# a finished run resumed again does nothing
+"$BIN" simulate "$WORK/job.json" -o "$WORK/term" --resume --progress quiet 2>&1 | grep -q "already complete" \
+  || fail "resuming a finished run must say so"

@@ -20,8 +20,8 @@ struct BenchCase {
   std::int64_t steps;     ///< timed steps per run
 };
 
-std::vector<BenchCase> standard_cases(double scale) {
-  auto base = [](int dim, int N, double zeta, double mu) {
+std::vector<BenchCase> standard_cases(double scale, double skin) {
+  auto base = [skin](int dim, int N, double zeta, double mu) {
     SimConfig c;
     c.dimension = dim;
     c.N = N;
@@ -30,6 +30,7 @@ std::vector<BenchCase> standard_cases(double scale) {
     c.zeta = zeta;
     c.mu = mu;
     c.seed = 1;
+    if (skin > 0) c.skin = skin;
     c.resolve_and_validate();
     return c;
   };
@@ -50,6 +51,7 @@ void run_case(const BenchCase& bc, int runs) {
   warm.prepare();
   warm.advance(std::llround(bc.warmup_time / warm.time_step().dt));
   std::vector<double> rates;
+  double builds_per_kstep = 0;
   for (int r = 0; r < runs; ++r) {
     HopperRun<D> run = HopperRun<D>(bc.config, RunOptions{});
     run.prepare();
@@ -57,14 +59,16 @@ void run_case(const BenchCase& bc, int runs) {
     run.state() = warm.state();
     run.forces().list().invalidate();
     const auto t0 = std::chrono::steady_clock::now();
+    const std::int64_t builds_before = run.forces().list().builds();
     run.advance(bc.steps);
+    builds_per_kstep = 1000.0 * (run.forces().list().builds() - builds_before) / bc.steps;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rates.push_back(bc.steps * double(bc.config.N) / s);
   }
   std::sort(rates.begin(), rates.end());
   const double median = rates[rates.size() / 2];
-  std::printf("%-2s %-58s median %8.3g  min %8.3g  max %8.3g particle-steps/s  (%d runs x %lld steps, dt %.3g)\n",
-              bc.id.c_str(), bc.description.c_str(), median, rates.front(), rates.back(), runs,
+  std::printf("%-2s %-58s skin %.2f builds/1000 steps %.1f  median %8.3g  min %8.3g  max %8.3g particle-steps/s  (%d runs x %lld steps, dt %.3g)\n",
+              bc.id.c_str(), bc.description.c_str(), bc.config.skin, builds_per_kstep, median, rates.front(), rates.back(), runs,
               static_cast<long long>(bc.steps), warm.time_step().dt);
   std::fflush(stdout);
 }
@@ -76,14 +80,16 @@ void add_bench_command(CLI::App& app, int& exit_status) {
     int runs = 3;
     std::vector<std::string> cases;
     double scale = 1.0;
+    double skin = 0;
   };
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("bench", "Standard performance cases: particle-steps per second");
   cmd->add_option("--runs", a->runs, "timed runs per case (median and spread)")->check(CLI::Range(1, 100));
   cmd->add_option("--case", a->cases, "cases to run (a, b, c; default all)");
   cmd->add_option("--scale", a->scale, "multiply the timed steps by this")->check(CLI::PositiveNumber);
+  cmd->add_option("--skin", a->skin, "Verlet skin (default: the job default)")->check(CLI::PositiveNumber);
   cmd->callback([a, &exit_status] {
-    for (const BenchCase& bc : standard_cases(a->scale)) {
+    for (const BenchCase& bc : standard_cases(a->scale, a->skin)) {
       if (!a->cases.empty() && std::find(a->cases.begin(), a->cases.end(), bc.id) == a->cases.end()) continue;
       if (bc.config.dimension == 2)
         run_case<2>(bc, a->runs);

@@ -155,7 +155,6 @@ SimConfig SimConfig::from_json(const json& j) {
     FieldReader rr(*re, "reinjection");
     rr.number("drop_depth_diameters", c.reinjection.drop_depth_diameters);
     rr.number("top_band", c.reinjection.top_band);
-    rr.integer("min_contacts", c.reinjection.min_contacts);
     rr.integer("max_attempts", c.reinjection.max_attempts);
     rr.reject_unknown();
   }
@@ -223,7 +222,6 @@ void SimConfig::resolve_and_validate() {
   require(run.checkpoint_interval >= 0, "run.checkpoint_interval", "must be >= 0 (0: no checkpoints)");
   require(run.trajectory_every_steps >= 0, "run.trajectory_every_steps", "must be >= 0 (0: no trajectory)");
   require(reinjection.drop_depth_diameters >= 1, "reinjection.drop_depth_diameters", "must be >= 1");
-  require(reinjection.min_contacts >= 0, "reinjection.min_contacts", "must be >= 0");
   require(reinjection.top_band > 0, "reinjection.top_band", "must be > 0");
   require(reinjection.max_attempts >= 1, "reinjection.max_attempts", "must be >= 1");
   require(observables.sample_interval > 0, "observables.sample_interval", "must be > 0");
@@ -265,8 +263,7 @@ nlohmann::json SimConfig::to_json() const {
               {"checkpoint_interval", run.checkpoint_interval},
               {"trajectory_every_steps", run.trajectory_every_steps}};
   j["reinjection"] = {{"drop_depth_diameters", reinjection.drop_depth_diameters},
-                      {"top_band", reinjection.top_band}, {"min_contacts", reinjection.min_contacts},
-                      {"max_attempts", reinjection.max_attempts}};
+                      {"top_band", reinjection.top_band}, {"max_attempts", reinjection.max_attempts}};
   j["observables"] = {{"sample_interval", observables.sample_interval}, {"block_length", observables.block_length},
                       {"profile_dh", observables.profile_dh}, {"profile_h_max", observables.profile_h_max},
                       {"kernel_width", observables.kernel_width}};

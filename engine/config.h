@@ -57,10 +57,6 @@ struct RunControls {
 /// Reinjection of exited particles on top of the pile (physics.md 6.4).
 struct ReinjectionParams {
   double drop_depth_diameters = 2.0;  ///< reinject once this many own diameters below the orifice
-  /// Only particles of the pile are touched: at least this many overlapping contacts. Without
-  /// it, the newest airborne reinjected particle is the "topmost" one and, with strong drag,
-  /// reinjection builds a free-flying tower that never lands.
-  int min_contacts = 1;
   double top_band = 3.0;              ///< candidates to touch: within this of the highest pile particle
   int max_attempts = 500;             ///< random placements tried before the fallback
 };

@@ -71,20 +71,6 @@ void SpContact<D>::friction_forces(const ParticleState<D>& s, VecArray<D>& out) 
   }
 }
 
-template <int D>
-void SpContact<D>::count_contacts(const ParticleState<D>& s, std::vector<std::uint16_t>& out) const {
-  const int n = s.size();
-  out.assign(n, 0);
-  for (int i = 0; i < n; ++i)
-    for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
-      const double sig = 0.5 * (s.sigma(i) + s.sigma(*p));
-      if ((s.x[i] - s.x[*p]).squaredNorm() < sig * sig) {
-        ++out[i];
-        ++out[*p];
-      }
-    }
-}
-
 template class SpContact<2>;
 template class SpContact<3>;
 

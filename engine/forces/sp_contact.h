@@ -20,9 +20,6 @@ class SpContact final : public ForceTerm<D> {
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override;
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<D>& s, VecArray<D>& out) const;
-  /// Number of overlapping partners of each particle (from a list valid for the current
-  /// positions: the count does not depend on when the list was built); overwrites out.
-  void count_contacts(const ParticleState<D>& s, std::vector<std::uint16_t>& out) const;
   void set_friction_enabled(bool on) { friction_on_ = on; }
   /// Largest relative overlap 1 - r/sigma_mn seen in the last accumulate().
   double max_overlap() const { return max_overlap_; }

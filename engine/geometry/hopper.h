@@ -24,6 +24,8 @@ template <>
 class Hopper<2> {
  public:
   static constexpr int kNumWalls = 4;
+  /// The funnel walls carry the pile (the side walls only confine it).
+  static constexpr bool is_floor(int k) { return k < 2; }
   Hopper(double W, double w, double theta_left_rad, double theta_right_rad);
 
   /// Nearest point of wall k to p.
@@ -55,6 +57,7 @@ template <>
 class Hopper<3> {
  public:
   static constexpr int kNumWalls = 2;
+  static constexpr bool is_floor(int k) { return k == 0; }  ///< the base carries the pile
   Hopper(double W, double w) : R_(W / 2), r_orifice_(w / 2) {}
 
   Vec<3> nearest_point(int k, const Vec<3>& p) const {

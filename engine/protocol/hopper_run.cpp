@@ -43,6 +43,7 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       rng_(c.effective_seed()),
       exits_(hopper_, c.reinjection.drop_depth_diameters, c.N),
       reinjector_(hopper_, c.reinjection, c.N),
+      pile_finder_(c.N),
       obs_(c),
       estimator_(c.run) {
   ff_ = std::make_unique<ForceField<D>>(c_, hopper_);
@@ -113,12 +114,13 @@ void HopperRun<D>::step_once() {
   const StepReport r = velocity_verlet_step(s_, *ff_, ts_.dt, [&](ParticleState<D>& st) {
     exits_.update(st, t_next, rec_);
     if (!c_.reinject || exits_.to_reinject().empty()) return;
-    ff_->list().update(st, hopper_);  // a list valid for these positions: canonical contact counts
-    ff_->contact().count_contacts(st, contacts_);
+    ff_->list().update(st, hopper_);  // a list valid for these positions: a canonical pile
+    pile_finder_.find(st, ff_->list(), hopper_, in_pile_);
     for (int i : exits_.to_reinject()) {
       ++rec_.reinjections;
-      if (!reinjector_.reinject(st, i, rng_, contacts_)) ++rec_.reinjection_fallbacks;
-      contacts_[i] = 0;
+      const bool touched = reinjector_.reinject(st, i, rng_, in_pile_);
+      if (!touched) ++rec_.reinjection_fallbacks;
+      in_pile_[i] = touched;  // resting on the pile; a fallback particle is still in the air
     }
   });
   if (!r.finite) throw InstabilityError("NaN or infinite position/velocity at t = " + std::to_string(time()));

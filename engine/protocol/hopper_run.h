@@ -21,6 +21,7 @@
 #include "exit_counter.h"
 #include "flow_rate.h"
 #include "observables.h"
+#include "pile_finder.h"
 #include "reinjector.h"
 #include "run_result.h"
 
@@ -81,7 +82,8 @@ class HopperRun {
   FlowObservables<D> obs_;
   FlowRateEstimator estimator_;
   VecArray<D> friction_scratch_;
-  std::vector<std::uint16_t> contacts_;
+  PileFinder<D> pile_finder_;
+  std::vector<std::uint8_t> in_pile_;
   std::int64_t fire_iterations_ = 0;
   double fire_max_force_ = 0;
   double ceiling_ = 0;            ///< a particle above this height has escaped upward

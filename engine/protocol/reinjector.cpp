@@ -25,9 +25,9 @@ bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, i
 }
 
 template <int D>
-bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint16_t>& contacts) {
+bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& pile) {
   const int n = s.size();
-  auto in_pile = [&](int k) { return k != i && !s.exited[k] && contacts[k] >= p_.min_contacts; };
+  auto in_pile = [&](int k) { return k != i && pile[k]; };
   double top = -INFINITY;
   for (int k = 0; k < n; ++k)
     if (in_pile(k)) top = std::max(top, s.x[k][kUp<D>]);
@@ -55,8 +55,9 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
     return true;
   }
   // Fallback (no pile yet, e.g. while the initial column falls, or no free spot): a random
-  // lateral position, just above the highest particle in that vertical column, moving like it.
-  // Spreading over the width keeps successive fallbacks from stacking into a tower.
+  // lateral position, just above the highest pile particle in that vertical column (or the
+  // floor), moving like it, lifted until it overlaps nothing. Particles in the air are never
+  // the base of a placement, so successive placements cannot stack into a tower.
   const double ri = 0.5 * s.sigma(i);
   const double half = hopper_.half_width() - ri;
   for (;;) {
@@ -67,7 +68,7 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
     double column_top = hopper_.funnel_top() + ri;
     int below = -1;
     for (int k = 0; k < n; ++k) {
-      if (k == i || s.exited[k]) continue;
+      if (!in_pile(k)) continue;
       Vec<D> d = s.x[k] - p;
       d[kUp<D>] = 0;
       const double sig = 0.5 * (s.sigma(i) + s.sigma(k));
@@ -76,7 +77,7 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
         below = k;
       }
     }
-    for (int lift = 0; lift < 8; ++lift) {
+    for (int lift = 0; lift < 64; ++lift) {
       p[kUp<D>] = column_top + lift * ri;
       if (is_free(s, i, p, below)) {
         s.x[i] = p;

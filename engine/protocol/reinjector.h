@@ -4,8 +4,8 @@
 /// topmost particles (centre distance exactly sigma_mn), overlapping no other particle and no
 /// wall, with the velocity of the particle it touches. N stays fixed.
 ///
-/// The particle to touch is drawn from the pile (particles with at least `min_contacts`
-/// overlapping contacts) within `top_band` of the pile's highest particle, the direction uniformly from the upper half circle (2D) or hemisphere (3D). If
+/// The particle to touch is drawn from the pile (see pile_finder.h) within `top_band` of the
+/// pile's highest particle, the direction uniformly from the upper half circle (2D) or hemisphere (3D). If
 /// `max_attempts` draws all collide, the particle is dropped just above the pile instead
 /// (counted as a fallback, so that a run can report how often that happened).
 #include <vector>
@@ -24,8 +24,8 @@ class Reinjector {
     candidates_.reserve(n);
   }
   /// Places particle i; returns false if the fallback placement was used.
-  /// contacts: overlapping partners per particle (SpContact::count_contacts).
-  bool reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint16_t>& contacts);
+  /// in_pile: membership of the pile (PileFinder), kept up to date for placed particles.
+  bool reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& in_pile);
   /// True if particle i at position p overlaps no other particle and no wall.
   bool is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching) const;
 

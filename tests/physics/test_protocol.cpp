@@ -76,22 +76,26 @@ TEST(Reinjection, KeepsNAndPlacesWithoutOverlap3D) {
 
 TEST(Reinjection, PlacementTouchesAPileParticleAndOverlapsNothing) {
   // Direct check of one placement: after reinject(), particle i is at exactly sigma_ic from
-  // some particle c with >= 1 contact and at >= sigma_ik from every other particle and wall.
+  // some pile particle c and at >= sigma_ik from every other particle and wall.
   SimConfig c = flowing_config(2, 5, 0.5, 0);
   HopperRun<2> run(c, RunOptions{});
   run.prepare();
   run.advance(20000);  // a pile has formed
   ParticleState<2>& s = run.state();
-  std::vector<std::uint16_t> contacts;
+  std::vector<std::uint8_t> in_pile;
   run.forces().list().build(s, run.hopper());
-  run.forces().contact().count_contacts(s, contacts);
+  PileFinder<2>(c.N).find(s, run.forces().list(), run.hopper(), in_pile);
+  int pile_size = 0;
+  for (auto p : in_pile) pile_size += p;
+  EXPECT_GT(pile_size, c.N / 2) << "most particles rest in the pile";
   Reinjector<2> reinjector(run.hopper(), c.reinjection, c.N);
   Rng rng(99);
   int touching = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const int i = trial;  // pretend particle `trial` has exited
     s.exited[i] = 1;
-    const bool touched = reinjector.reinject(s, i, rng, contacts);
+    const bool touched = reinjector.reinject(s, i, rng, in_pile);
+    in_pile[i] = touched;
     touching += touched;
     double nearest_gap = INFINITY;
     for (int k = 0; k < s.size(); ++k) {

@@ -54,7 +54,8 @@ for setting in sorted(rows):
     print(f"\n{setting}")
     print("   w        Q      Q_err   status      window        exits   |F_drag|/|F_fric|  wall s")
     for w, s in data:
-        print(f"  {w:4.1f}  {s['Q']:8.4f}  {s['Q_err']:7.4f}   {s['status']:10s}  {s['window_start']:5.0f}-{s['window_end']:5.0f}  {s['exits_in_window']:6d}   {s['force_ratio']:10.4g}   {s['wall_seconds']:7.1f}")
+        ratio = s['force_ratio'] if s['force_ratio'] is not None else float('inf')
+        print(f"  {w:4.1f}  {s['Q']:8.4f}  {s['Q_err']:7.4f}   {s['status']:10s}  {s['window_start']:5.0f}-{s['window_end']:5.0f}  {s['exits_in_window']:6d}   {ratio:10.4g}   {s['wall_seconds']:7.1f}")
     flowing = [(w, s) for w, s in data if s["Q"] > 0 and s["Q_err"] > 0]
     if len(flowing) >= 4:
         ws = np.array([w for w, _ in flowing]); q = np.array([s["Q"] for _, s in flowing]); dq = np.array([s["Q_err"] for _, s in flowing])

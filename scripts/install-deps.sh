@@ -12,6 +12,9 @@ PACKAGES=(
   libsqlite3-dev sqlite3                  # campaign store
   libcli11-dev                            # command line
   libgtest-dev googletest                 # tests
+  libmuparser-dev                         # derived parameters and filters in sweep files
+  libssl-dev                              # SHA-256 job keys (OpenSSL libcrypto)
+  nodejs npm bc                           # tests: the JSON Schema of sweeps checked with ajv; timing
   gnuplot-nox                             # figures
   python3-h5py python3-numpy              # tests read result files the way users do (h5py)
 )

@@ -7,4 +7,6 @@ namespace beverloo {
 /// Each returns a function that runs the command after parsing and returns the exit code.
 void add_simulate_command(CLI::App& app, int& exit_status);
 void add_bench_command(CLI::App& app, int& exit_status);
+void add_campaign_commands(CLI::App& app, int& exit_status);
+void add_query_command(CLI::App& app, int& exit_status);
 }  // namespace beverloo

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   int status = beverloo::exit_code::kOk;
   beverloo::add_simulate_command(app, status);
   beverloo::add_bench_command(app, status);
+  beverloo::add_campaign_commands(app, status);
+  beverloo::add_query_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

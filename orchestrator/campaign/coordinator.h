@@ -1,0 +1,43 @@
+#pragma once
+/// \file coordinator.h
+/// \brief The coordinator: the only process that writes the campaign database. It holds the
+/// campaign lock, reconciles attempts left by an earlier coordinator, claims pending jobs,
+/// starts workers through an executor, ingests their results and classifies their failures.
+#include <atomic>
+#include <optional>
+#include <string>
+
+#include "engine/protocol/hopper_run.h"
+
+namespace beverloo {
+
+struct CampaignOptions {
+  std::string dir = "campaign";
+  int workers = 0;           ///< 0: the number of cores
+  int max_retries = 2;       ///< science retries per job (blow-up, I/O); infrastructure ones are free
+  int max_infra_retries = 50;  ///< guard against endless kill loops
+  double job_timeout_s = 0;  ///< wall seconds per attempt (0: none); then SIGTERM, checkpoint, resume later
+  ProgressMode progress = ProgressMode::Auto;
+};
+
+/// `beverloo run`: creates or reopens the campaign of sweep_path (if given) and runs every job
+/// that is not done. Returns an exit code.
+int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOptions& o);
+
+/// The campaign lock: one coordinator per campaign directory (flock on coordinator.lock; the
+/// holder's host, pid and start time are written into it). Throws if another one lives.
+class CoordinatorLock {
+ public:
+  explicit CoordinatorLock(const std::string& dir);
+  ~CoordinatorLock();
+
+ private:
+  int fd_ = -1;
+};
+
+class CampaignBusy : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,301 @@
+#include "store.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+
+namespace beverloo {
+
+const char* to_string(FailureClass c) {
+  switch (c) {
+    case FailureClass::InvalidParameters: return "invalid_parameters";
+    case FailureClass::BlowUp: return "blow_up";
+    case FailureClass::Killed: return "killed";
+    case FailureClass::Timeout: return "timeout";
+    case FailureClass::Io: return "io";
+    case FailureClass::Interrupted: return "interrupted";
+    case FailureClass::Lost: return "lost";
+    case FailureClass::Internal: return "internal";
+  }
+  return "internal";
+}
+
+bool is_infrastructure(FailureClass c) {
+  return c == FailureClass::Killed || c == FailureClass::Lost || c == FailureClass::Interrupted ||
+         c == FailureClass::Timeout;
+}
+
+std::string new_token() {
+  std::ifstream urandom("/dev/urandom", std::ios::binary);
+  unsigned char bytes[16];
+  if (!urandom.read(reinterpret_cast<char*>(bytes), sizeof bytes)) {
+    std::random_device rd;
+    for (auto& b : bytes) b = static_cast<unsigned char>(rd());
+  }
+  static const char* hex = "0123456789abcdef";
+  std::string t;
+  for (unsigned char b : bytes) {
+    t += hex[b >> 4];
+    t += hex[b & 15];
+  }
+  return t;
+}
+
+std::string host_name() {
+  char buf[256] = {0};
+  gethostname(buf, sizeof buf - 1);
+  return buf;
+}
+
+std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::string& sweep_text,
+                                            const std::vector<JobSpec>& jobs) {
+  db::Transaction tx(db_);
+  const std::string sha = sha256_hex(sweep_text);
+  std::int64_t id = -1;
+  {
+    db::Statement find = db_.prepare("SELECT id FROM campaigns WHERE name = ?1 AND sweep_sha256 = ?2");
+    find.bind(1, sweep.name).bind(2, sha);
+    if (find.step()) id = find.get_int(0);
+  }
+  if (id < 0) {
+    db_.prepare("INSERT INTO campaigns (name, sweep_json, sweep_sha256) VALUES (?1, ?2, ?3)")
+        .bind(1, sweep.name)
+        .bind(2, sweep_text)
+        .bind(3, sha)
+        .run();
+    id = db_.last_insert_rowid();
+  }
+  db::Statement insert_job = db_.prepare(
+      "INSERT OR IGNORE INTO jobs (key, dir, job_json, engine_version, model, dimension, N, size_ratio, W_container, w, "
+      "theta_w_left_deg, theta_w_right_deg, E_sp, E_w, zeta, mu, lambda, dissipation_scale, gravity, replica, seed, "
+      "t_max, target_rel_err) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, "
+      "?18, ?19, ?20, ?21, ?22, ?23)");
+  db::Statement link = db_.prepare(
+      "INSERT OR IGNORE INTO campaign_jobs (campaign_id, job_key, point_index, sweep_point) VALUES (?1, ?2, ?3, ?4)");
+  std::int64_t index = 0;
+  for (const JobSpec& j : jobs) {
+    const SimConfig& c = j.config;
+    std::optional<double> lambda;
+    if (c.mu > 0) lambda = c.zeta / c.mu;
+    else if (c.zeta > 0) lambda = INFINITY;
+    std::optional<double> scale;
+    if (c.zeta > 0 && c.mu > 0) scale = std::sqrt(c.zeta * c.mu);
+    else if (c.zeta > 0 || c.mu > 0) scale = c.zeta + c.mu;
+    insert_job.bind(1, j.key)
+        .bind(2, "jobs/" + j.key.substr(0, 16))
+        .bind(3, j.job.dump())
+        .bind(4, BEVERLOO_VERSION)
+        .bind(5, c.model)
+        .bind(6, c.dimension)
+        .bind(7, c.N)
+        .bind(8, c.size_ratio)
+        .bind(9, c.W)
+        .bind(10, c.w)
+        .bind(11, c.theta_w_left_deg)
+        .bind(12, c.theta_w_right_deg)
+        .bind(13, c.E_sp)
+        .bind(14, c.E_w)
+        .bind(15, c.zeta)
+        .bind(16, c.mu)
+        .bind(17, lambda)
+        .bind(18, scale)
+        .bind(19, c.gravity)
+        .bind(20, c.replica)
+        .bind(21, static_cast<std::int64_t>(c.effective_seed()))
+        .bind(22, c.run.t_max)
+        .bind(23, c.run.target_rel_err)
+        .run();
+    link.bind(1, id).bind(2, j.key).bind(3, index++).bind(4, j.point.dump()).run();
+  }
+  tx.commit();
+  return id;
+}
+
+std::int64_t CampaignStore::latest_campaign() {
+  db::Statement st = db_.prepare("SELECT max(id) FROM campaigns");
+  return st.step() && !st.is_null(0) ? st.get_int(0) : -1;
+}
+
+std::optional<ClaimedJob> CampaignStore::claim_next(std::int64_t campaign, const std::string& executor,
+                                                    const std::string& host) {
+  db::Transaction tx(db_);
+  db::Statement pick = db_.prepare(
+      "SELECT j.key, j.dir, j.job_json FROM jobs j JOIN campaign_jobs c ON c.job_key = j.key "
+      "WHERE c.campaign_id = ?1 AND j.state = 'pending' ORDER BY c.point_index LIMIT 1");
+  pick.bind(1, campaign);
+  if (!pick.step()) return std::nullopt;
+  ClaimedJob a;
+  a.key = pick.get_text(0);
+  a.dir = pick.get_text(1);
+  a.job_json = pick.get_text(2);
+  pick.reset();
+  db::Statement next = db_.prepare("SELECT coalesce(max(attempt_no), 0) + 1 FROM attempts WHERE job_key = ?1");
+  next.bind(1, a.key);
+  next.step();
+  a.attempt_no = static_cast<int>(next.get_int(0));
+  next.reset();
+  a.token = new_token();
+  db_.prepare("INSERT INTO attempts (job_key, attempt_no, token, executor, host, state) VALUES (?1, ?2, ?3, ?4, ?5, 'running')")
+      .bind(1, a.key)
+      .bind(2, a.attempt_no)
+      .bind(3, a.token)
+      .bind(4, executor)
+      .bind(5, host)
+      .run();
+  a.attempt_id = db_.last_insert_rowid();
+  db_.prepare("UPDATE jobs SET state = 'running' WHERE key = ?1").bind(1, a.key).run();
+  tx.commit();
+  return a;
+}
+
+void CampaignStore::set_attempt_pid(std::int64_t attempt_id, std::int64_t pid) {
+  db_.prepare("UPDATE attempts SET pid = ?1 WHERE id = ?2").bind(1, pid).bind(2, attempt_id).run();
+}
+
+void CampaignStore::heartbeat(std::int64_t attempt_id) {
+  db_.prepare("UPDATE attempts SET heartbeat_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?1")
+      .bind(1, attempt_id)
+      .run();
+}
+
+void CampaignStore::ingest_success(const ClaimedJob& a, const std::string& summary_json, const std::vector<double>& h,
+                                   const std::vector<double>& v_g, const std::vector<double>& v_g_err) {
+  const nlohmann::json s = nlohmann::json::parse(summary_json);
+  db::Transaction tx(db_);
+  db::Statement insert = db_.prepare(
+      "INSERT OR IGNORE INTO results (job_key, attempt_id, status, Q, Q_err, Q_rel_err, window_start, window_end, "
+      "exits_in_window, exits_total, clogged, clog_time, rho_n, a_eff, Q_prime, Q_prime_err, mean_F_drag, "
+      "mean_F_friction, force_ratio, dt, steps, wall_seconds, particle_steps_per_second, summary_json) VALUES "
+      "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24)");
+  auto num = [&](const char* k) { return s.at(k).is_number() ? s.at(k).get<double>() : INFINITY; };
+  insert.bind(1, a.key)
+      .bind(2, a.attempt_id)
+      .bind(3, s.at("status").get<std::string>())
+      .bind(4, num("Q"))
+      .bind(5, num("Q_err"))
+      .bind(6, num("Q_rel_err"))
+      .bind(7, num("window_start"))
+      .bind(8, num("window_end"))
+      .bind(9, s.at("exits_in_window").get<std::int64_t>())
+      .bind(10, s.at("exits_total").get<std::int64_t>())
+      .bind(11, static_cast<std::int64_t>(s.at("clogged").get<bool>()))
+      .bind(12, s.at("clogged").get<bool>() ? std::optional<double>(num("clog_time")) : std::nullopt)
+      .bind(13, num("rho_n"))
+      .bind(14, num("a_eff"))
+      .bind(15, num("Q_prime"))
+      .bind(16, num("Q_prime_err"))
+      .bind(17, num("mean_F_drag"))
+      .bind(18, num("mean_F_friction"))
+      .bind(19, num("force_ratio"))
+      .bind(20, num("dt"))
+      .bind(21, s.at("steps").get<std::int64_t>())
+      .bind(22, num("wall_seconds"))
+      .bind(23, num("particle_steps_per_second"))
+      .bind(24, summary_json)
+      .run();
+  const bool fresh = db_.changes() > 0;
+  if (fresh) {
+    db::Statement prof = db_.prepare("INSERT OR IGNORE INTO velocity_profiles (job_key, h, v_g, v_g_err) VALUES (?1, ?2, ?3, ?4)");
+    for (std::size_t k = 0; k < h.size(); ++k) prof.bind(1, a.key).bind(2, h[k]).bind(3, v_g[k]).bind(4, v_g_err[k]).run();
+  }
+  db_.prepare("UPDATE attempts SET state = 'succeeded', exit_status = 0, ended_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') "
+              "WHERE id = ?1 AND state = 'running'")
+      .bind(1, a.attempt_id)
+      .run();
+  db_.prepare("UPDATE jobs SET state = CASE WHEN (SELECT clogged FROM results WHERE job_key = ?1) THEN 'clogged' ELSE 'done' END "
+              "WHERE key = ?1")
+      .bind(1, a.key)
+      .run();
+  tx.commit();
+}
+
+std::string CampaignStore::record_failure(std::int64_t attempt_id, const std::string& key, FailureClass cls,
+                                          int exit_status, const std::string& message, int max_retries) {
+  db::Transaction tx(db_);
+  db_.prepare("UPDATE attempts SET state = ?1, failure_class = ?2, exit_status = ?3, message = ?4, "
+              "ended_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?5")
+      .bind(1, cls == FailureClass::Interrupted ? "interrupted" : (cls == FailureClass::Lost ? "lost" : "failed"))
+      .bind(2, to_string(cls))
+      .bind(3, exit_status)
+      .bind(4, message)
+      .bind(5, attempt_id)
+      .run();
+  std::string state;
+  {
+    db::Statement st = db_.prepare("SELECT state, retries_used FROM jobs WHERE key = ?1");
+    st.bind(1, key);
+    st.step();
+    state = st.get_text(0);
+    const std::int64_t used = st.get_int(1);
+    if (state == "done" || state == "clogged" || state == "cancelled") {
+      tx.commit();
+      return state;  // a result or a cancel arrived meanwhile: nothing to undo
+    }
+    if (cls == FailureClass::InvalidParameters || (!is_infrastructure(cls) && used >= max_retries))
+      state = "failed";
+    else
+      state = "pending";
+    st.reset();
+    db_.prepare("UPDATE jobs SET state = ?1, retries_used = retries_used + ?2 WHERE key = ?3")
+        .bind(1, state)
+        .bind(2, is_infrastructure(cls) || state == "failed" ? 0 : 1)
+        .bind(3, key)
+        .run();
+  }
+  tx.commit();
+  return state;
+}
+
+std::vector<RunningAttempt> CampaignStore::running_attempts() {
+  std::vector<RunningAttempt> out;
+  db::Statement st = db_.prepare(
+      "SELECT a.id, a.job_key, j.dir, a.token, a.executor, coalesce(a.pid, -1) FROM attempts a "
+      "JOIN jobs j ON j.key = a.job_key WHERE a.state = 'running' ORDER BY a.id");
+  while (st.step()) out.push_back({st.get_int(0), st.get_text(1), st.get_text(2), st.get_text(3), st.get_text(4), st.get_int(5)});
+  return out;
+}
+
+StateCounts CampaignStore::counts(std::int64_t campaign) {
+  StateCounts c;
+  db::Statement st = db_.prepare(
+      "SELECT j.state, count(*) FROM jobs j JOIN campaign_jobs c ON c.job_key = j.key WHERE c.campaign_id = ?1 GROUP BY j.state");
+  st.bind(1, campaign);
+  while (st.step()) {
+    const std::string s = st.get_text(0);
+    const std::int64_t n = st.get_int(1);
+    if (s == "pending") c.pending = n;
+    else if (s == "running") c.running = n;
+    else if (s == "done") c.done = n;
+    else if (s == "clogged") c.clogged = n;
+    else if (s == "failed") c.failed = n;
+    else if (s == "cancelled") c.cancelled = n;
+  }
+  return c;
+}
+
+std::int64_t CampaignStore::retry(std::int64_t campaign, bool include_cancelled) {
+  db::Transaction tx(db_);
+  db_.prepare(std::string("UPDATE jobs SET state = 'pending', retries_used = 0 WHERE key IN (SELECT job_key FROM campaign_jobs "
+                          "WHERE campaign_id = ?1) AND state IN ('failed'") +
+              (include_cancelled ? ", 'cancelled')" : ")"))
+      .bind(1, campaign)
+      .run();
+  const std::int64_t n = db_.changes();
+  tx.commit();
+  return n;
+}
+
+std::int64_t CampaignStore::cancel(std::int64_t campaign) {
+  db::Transaction tx(db_);
+  db_.prepare("UPDATE jobs SET state = 'cancelled' WHERE key IN (SELECT job_key FROM campaign_jobs WHERE campaign_id = ?1) "
+              "AND state = 'pending'")
+      .bind(1, campaign)
+      .run();
+  const std::int64_t n = db_.changes();
+  tx.commit();
+  return n;
+}
+
+}  // namespace beverloo

@@ -1,0 +1,270 @@
+// Campaign commands: run, sweep check/expand, campaign create/run/status/retry/cancel, worker.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "commands.h"
+#include "engine/io/h5.h"
+#include "exit_codes.h"
+#include "orchestrator/campaign/coordinator.h"
+#include "orchestrator/campaign/store.h"
+#include "orchestrator/campaign/worker.h"
+#include "orchestrator/db/migrations.h"
+
+namespace beverloo {
+namespace fs = std::filesystem;
+namespace {
+
+Sweep load_sweep(const std::string& path, std::vector<JobSpec>* jobs) {
+  std::ifstream in(path);
+  if (!in) throw SweepError(path, "cannot read the sweep file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw SweepError(path, std::string("is not valid JSON: ") + e.what());
+  }
+  Sweep s = Sweep::parse(j, fs::path(path).stem().string());
+  if (jobs) *jobs = s.expand();
+  return s;
+}
+
+/// Runs a command body, turning every error into its message and exit code.
+template <class F>
+int guarded(const char* cmd, F&& body) {
+  try {
+    return body();
+  } catch (const SweepError& e) {
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    return exit_code::kConfig;
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    return exit_code::kConfig;
+  } catch (const CampaignBusy& e) {
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    return exit_code::kBusy;
+  } catch (const db::DbError& e) {
+    std::fprintf(stderr, "beverloo %s: database: %s\n", cmd, e.what());
+    return exit_code::kIo;
+  } catch (const IoError& e) {
+    std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, e.what());
+    return exit_code::kIo;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "beverloo %s: internal error: %s\n", cmd, e.what());
+    return exit_code::kInternal;
+  }
+}
+
+std::string fmt(const nlohmann::json& v) {
+  if (v.is_number_float()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v.get<double>());
+    return buf;
+  }
+  return v.is_string() ? v.get<std::string>() : v.dump();
+}
+
+int expand_command(const std::string& path, const std::string& format) {
+  std::vector<JobSpec> jobs;
+  const Sweep s = load_sweep(path, &jobs);
+  // columns: every parameter any point sets, then the resolved dissipation
+  std::vector<std::string> cols;
+  for (const JobSpec& j : jobs)
+    for (auto it = j.point.begin(); it != j.point.end(); ++it)
+      if (std::find(cols.begin(), cols.end(), it.key()) == cols.end()) cols.push_back(it.key());
+  for (const char* extra : {"zeta", "mu"})
+    if (std::find(cols.begin(), cols.end(), extra) == cols.end()) cols.push_back(extra);
+  auto value = [](const JobSpec& j, const std::string& c) -> nlohmann::json {
+    if (j.point.contains(c)) return j.point[c];
+    if (j.job.contains(c)) return j.job[c];
+    return nullptr;
+  };
+  if (format == "json") {
+    nlohmann::json out = nlohmann::json::array();
+    for (const JobSpec& j : jobs) out.push_back({{"key", j.key}, {"point", j.point}, {"job", j.job}});
+    std::cout << out.dump(2) << "\n";
+    return exit_code::kOk;
+  }
+  const char* sep = format == "csv" ? "," : "  ";
+  std::printf(format == "csv" ? "%s" : "%-16s", "key");
+  for (const auto& c : cols) std::printf(format == "csv" ? "%s%s" : "%s%-12s", sep, c.c_str());
+  std::printf("\n");
+  for (const JobSpec& j : jobs) {
+    std::printf(format == "csv" ? "%s" : "%-16s", (format == "csv" ? j.key : j.key.substr(0, 16)).c_str());
+    for (const auto& c : cols) std::printf(format == "csv" ? "%s%s" : "%s%-12s", sep, fmt(value(j, c)).c_str());
+    std::printf("\n");
+  }
+  if (format == "table") std::printf("(%zu jobs from sweep \"%s\")\n", jobs.size(), s.name.c_str());
+  return exit_code::kOk;
+}
+
+int status_command(const std::string& dir) {
+  db::Database db((fs::path(dir) / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
+  db::check_store(db);
+  CampaignStore store(db);
+  const std::int64_t id = store.latest_campaign();
+  if (id < 0) throw SweepError(dir, "holds no campaign");
+  db::Statement name = db.prepare("SELECT name, created_at FROM campaigns WHERE id = ?1");
+  name.bind(1, id);
+  name.step();
+  const StateCounts c = store.counts(id);
+  std::printf("campaign     %s (created %s) in %s\n", name.get_text(0).c_str(), name.get_text(1).c_str(), dir.c_str());
+  std::printf("jobs         %lld: %lld done, %lld clogged, %lld failed, %lld cancelled, %lld running, %lld pending\n",
+              (long long)c.total(), (long long)c.done, (long long)c.clogged, (long long)c.failed, (long long)c.cancelled,
+              (long long)c.running, (long long)c.pending);
+  db::Statement tp = db.prepare(
+      "SELECT count(*), (julianday(max(a.ended_at)) - julianday(min(a.started_at))) * 86400, sum(r.wall_seconds) "
+      "FROM attempts a JOIN results r ON r.attempt_id = a.id JOIN campaign_jobs cj ON cj.job_key = a.job_key "
+      "WHERE cj.campaign_id = ?1");
+  tp.bind(1, id);
+  tp.step();
+  const double n = tp.get_int(0), span = tp.get_double(1), compute = tp.get_double(2);
+  if (n > 0 && span > 0) {
+    const double per_hour = n / span * 3600;
+    std::printf("throughput   %.1f jobs/hour over %.0f s; %.0f s of engine time\n", per_hour, span, compute);
+    if (c.pending + c.running > 0) std::printf("ETA          %.0f s at that rate\n", (c.pending + c.running) / per_hour * 3600);
+  }
+  db::Statement fails = db.prepare(
+      "SELECT a.failure_class, count(*) FROM attempts a JOIN campaign_jobs cj ON cj.job_key = a.job_key "
+      "WHERE cj.campaign_id = ?1 AND a.failure_class IS NOT NULL GROUP BY a.failure_class ORDER BY 2 DESC");
+  fails.bind(1, id);
+  std::string classes;
+  while (fails.step()) classes += (classes.empty() ? "" : ", ") + fails.get_text(0) + " " + std::to_string(fails.get_int(1));
+  std::printf("failures     %s\n", classes.empty() ? "none" : classes.c_str());
+  return exit_code::kOk;
+}
+
+template <class F>
+int with_store(const std::string& dir, F&& body) {
+  if (!fs::exists(fs::path(dir) / "campaign.sqlite")) throw SweepError(dir, "holds no campaign");
+  CoordinatorLock lock(dir);  // the database has one writer at a time
+  db::Database db((fs::path(dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
+  db::open_store(db);
+  CampaignStore store(db);
+  const std::int64_t id = store.latest_campaign();
+  if (id < 0) throw SweepError(dir, "holds no campaign");
+  return body(store, id);
+}
+
+}  // namespace
+
+void add_campaign_commands(CLI::App& app, int& exit_status) {
+  auto opts = std::make_shared<CampaignOptions>();
+  auto sweep_path = std::make_shared<std::string>();
+  auto progress = std::make_shared<std::string>("auto");
+  auto to_mode = [](const std::string& p) {
+    return p == "terminal" ? ProgressMode::Terminal : p == "log" ? ProgressMode::Log : p == "quiet" ? ProgressMode::Quiet : ProgressMode::Auto;
+  };
+  auto add_run_options = [&](CLI::App* cmd) {
+    cmd->add_option("--dir", opts->dir, "campaign directory (default: campaigns/<sweep name>)");
+    cmd->add_option("--workers", opts->workers, "worker processes (default: the number of cores)")->check(CLI::Range(1, 4096));
+    cmd->add_option("--max-retries", opts->max_retries, "retries per job for blow-ups and I/O errors")->check(CLI::Range(0, 100));
+    cmd->add_option("--job-timeout", opts->job_timeout_s, "wall seconds per attempt; then checkpoint and resume later");
+    cmd->add_option("--progress", *progress, "auto | terminal | log | quiet")->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));
+  };
+
+  CLI::App* run = app.add_subcommand("run", "Create or reopen a campaign and run every job that is not done");
+  run->add_option("SWEEP", *sweep_path, "sweep file (JSON)")->required();
+  add_run_options(run);
+  run->callback([=, &exit_status] {
+    exit_status = guarded("run", [&] {
+      CampaignOptions o = *opts;
+      if (o.dir.empty() || o.dir == "campaign") o.dir = (fs::path("campaigns") / fs::path(*sweep_path).stem()).string();
+      o.progress = to_mode(*progress);
+      return run_campaign(*sweep_path, o);
+    });
+  });
+
+  CLI::App* sweep = app.add_subcommand("sweep", "Check or expand a sweep file without running it");
+  sweep->require_subcommand(1);
+  CLI::App* check = sweep->add_subcommand("check", "Validate a sweep file");
+  auto check_path = std::make_shared<std::string>();
+  check->add_option("FILE", *check_path)->required();
+  check->callback([=, &exit_status] {
+    exit_status = guarded("sweep check", [&] {
+      std::vector<JobSpec> jobs;
+      const Sweep s = load_sweep(*check_path, &jobs);
+      std::printf("%s: valid, sweep \"%s\", %zu jobs\n", check_path->c_str(), s.name.c_str(), jobs.size());
+      return exit_code::kOk;
+    });
+  });
+  CLI::App* expand = sweep->add_subcommand("expand", "List the jobs of a sweep with their keys");
+  auto expand_path = std::make_shared<std::string>();
+  auto format = std::make_shared<std::string>("table");
+  expand->add_option("FILE", *expand_path)->required();
+  expand->add_option("--format", *format, "table | csv | json")->check(CLI::IsMember({"table", "csv", "json"}));
+  expand->callback([=, &exit_status] { exit_status = guarded("sweep expand", [&] { return expand_command(*expand_path, *format); }); });
+
+  CLI::App* campaign = app.add_subcommand("campaign", "The pieces of `run`, one at a time");
+  campaign->require_subcommand(1);
+  auto dir = std::make_shared<std::string>("campaign");
+  CLI::App* create = campaign->add_subcommand("create", "Create the campaign of a sweep without running it");
+  auto create_path = std::make_shared<std::string>();
+  create->add_option("SWEEP", *create_path)->required();
+  create->add_option("--dir", *dir, "campaign directory");
+  create->callback([=, &exit_status] {
+    exit_status = guarded("campaign create", [&] {
+      std::vector<JobSpec> jobs;
+      const Sweep s = load_sweep(*create_path, &jobs);
+      std::ifstream in(*create_path);
+      std::stringstream text;
+      text << in.rdbuf();
+      fs::create_directories(fs::path(*dir) / "jobs");
+      CoordinatorLock lock(*dir);
+      db::Database db((fs::path(*dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
+      db::open_store(db);
+      CampaignStore(db).create_campaign(s, text.str(), jobs);
+      std::printf("campaign \"%s\" with %zu jobs in %s\n", s.name.c_str(), jobs.size(), dir->c_str());
+      return exit_code::kOk;
+    });
+  });
+  CLI::App* crun = campaign->add_subcommand("run", "Run the jobs of an existing campaign that are not done");
+  crun->add_option("--dir", opts->dir, "campaign directory");
+  crun->add_option("--workers", opts->workers, "worker processes");
+  crun->add_option("--progress", *progress, "auto | terminal | log | quiet");
+  crun->callback([=, &exit_status] {
+    exit_status = guarded("campaign run", [&] {
+      CampaignOptions o = *opts;
+      o.progress = to_mode(*progress);
+      return run_campaign(std::nullopt, o);
+    });
+  });
+  CLI::App* status = campaign->add_subcommand("status", "Counts by state, throughput, ETA, failures by class");
+  status->add_option("--dir", *dir, "campaign directory");
+  status->callback([=, &exit_status] { exit_status = guarded("campaign status", [&] { return status_command(*dir); }); });
+  CLI::App* retry = campaign->add_subcommand("retry", "Failed jobs back to pending (retry budget reset)");
+  auto include_cancelled = std::make_shared<bool>(false);
+  retry->add_option("--dir", *dir, "campaign directory");
+  retry->add_flag("--include-cancelled", *include_cancelled, "also cancelled jobs");
+  retry->callback([=, &exit_status] {
+    exit_status = guarded("campaign retry", [&] {
+      return with_store(*dir, [&](CampaignStore& s, std::int64_t id) {
+        std::printf("%lld jobs back to pending\n", (long long)s.retry(id, *include_cancelled));
+        return exit_code::kOk;
+      });
+    });
+  });
+  CLI::App* cancel = campaign->add_subcommand("cancel", "Pending jobs to cancelled");
+  cancel->add_option("--dir", *dir, "campaign directory");
+  cancel->callback([=, &exit_status] {
+    exit_status = guarded("campaign cancel", [&] {
+      return with_store(*dir, [&](CampaignStore& s, std::int64_t id) {
+        std::printf("%lld pending jobs cancelled\n", (long long)s.cancel(id));
+        return exit_code::kOk;
+      });
+    });
+  });
+
+  CLI::App* worker = app.add_subcommand("worker", "Run one job attempt from its spec (started by executors)");
+  worker->group("");  // not for people: hidden from --help
+  auto spec = std::make_shared<std::string>();
+  worker->add_option("SPEC", *spec)->required();
+  worker->callback([=, &exit_status] { exit_status = run_worker(*spec); });
+}
+
+}  // namespace beverloo

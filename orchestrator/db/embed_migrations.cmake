@@ -1,0 +1,12 @@
+# Generates schema_migrations.inc from schema/*.sql (sorted: the numbers order them).
+file(GLOB files "${SCHEMA_DIR}/[0-9][0-9][0-9][0-9]_*.sql")
+list(SORT files)
+set(out "// generated from schema/*.sql by embed_migrations.cmake; do not edit\nstruct Migration { const char* name; const char* sql; };\nstatic const Migration kMigrations[] = {\n")
+foreach(f ${files})
+  get_filename_component(name ${f} NAME)
+  file(READ ${f} content)
+  string(APPEND out "  {\"${name}\", R\"beverloo_sql(${content})beverloo_sql\"},\n")
+endforeach()
+string(APPEND out "};\n")
+file(WRITE ${OUTPUT}.tmp "${out}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different ${OUTPUT}.tmp ${OUTPUT})

@@ -1,0 +1,41 @@
+#include "migrations.h"
+
+#include "schema_migrations.inc"  // generated: kMigrations[] = {{"0001_init.sql", R"(...)"}, ...}
+
+namespace beverloo::db {
+
+int known_schema_version() { return static_cast<int>(sizeof(kMigrations) / sizeof(kMigrations[0])); }
+
+void check_store(Database& db) {
+  const std::int64_t app = db.scalar_int("PRAGMA application_id");
+  const std::int64_t version = db.scalar_int("PRAGMA user_version");
+  if (app != kApplicationId)
+    throw DbError("not a beverloo campaign database (application_id " + std::to_string(app) + ")", SQLITE_MISMATCH);
+  if (version > known_schema_version())
+    throw DbError("campaign database has schema version " + std::to_string(version) + ", newer than this beverloo (" +
+                      std::to_string(known_schema_version()) + "); use a newer beverloo",
+                  SQLITE_MISMATCH);
+}
+
+void open_store(Database& db) {
+  db.exec("PRAGMA journal_mode=WAL");
+  db.exec("PRAGMA foreign_keys=ON");
+  db.exec("PRAGMA synchronous=NORMAL");
+  Transaction tx(db);
+  const std::int64_t app = db.scalar_int("PRAGMA application_id");
+  const std::int64_t version = db.scalar_int("PRAGMA user_version");
+  if (app == 0 && version == 0) {
+    if (db.scalar_int("SELECT count(*) FROM sqlite_schema") != 0)
+      throw DbError("this file is an SQLite database of another application; refusing to touch it", SQLITE_MISMATCH);
+    db.exec("PRAGMA application_id=" + std::to_string(kApplicationId));
+  } else {
+    check_store(db);
+  }
+  for (int v = static_cast<int>(version); v < known_schema_version(); ++v) {
+    db.exec(kMigrations[v].sql);
+    db.exec("PRAGMA user_version=" + std::to_string(v + 1));
+  }
+  tx.commit();
+}
+
+}  // namespace beverloo::db

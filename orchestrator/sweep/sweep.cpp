@@ -1,0 +1,379 @@
+#include "sweep.h"
+
+#include <openssl/evp.h>
+
+#include <cmath>
+#include <muParser.h>
+#include <set>
+
+namespace beverloo {
+namespace {
+using nlohmann::json;
+
+/// A value with the JSON path it came from, so that an engine error can name it.
+struct Tagged {
+  json value;
+  std::string path;
+};
+using Point = std::map<std::string, Tagged>;
+
+const std::set<std::string>& sweepable() {
+  static const std::set<std::string> names = {
+      "model", "dimension", "N", "size_ratio", "W", "w", "theta_w_deg", "theta_w_left_deg", "theta_w_right_deg",
+      "E_sp", "E_w", "zeta", "mu", "gravity", "dt", "skin", "max_overlap", "initial_packing_fraction", "reinject",
+      "seed", "replica", "lambda", "dissipation_scale", "run.t_max", "run.target_rel_err", "run.t_clog",
+      "run.min_transient", "run.min_window", "run.check_interval", "run.rate_bin"};
+  return names;
+}
+std::string known_list() {
+  std::string s;
+  for (const auto& n : sweepable()) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+std::string show(const json& v) { return v.dump(); }
+
+std::vector<Tagged> values_of(const json& spec, const std::string& path) {
+  std::vector<Tagged> out;
+  auto check_count = [&](const json& a, const std::string& p) {
+    if (!a.is_array() || a.size() != 3 || !a[0].is_number() || !a[1].is_number() || !a[2].is_number_integer())
+      throw SweepError(p, show(a) + ": must be [start, stop, count] with an integer count");
+    if (a[2].get<long>() < 1) throw SweepError(p + "[2]", show(a[2]) + ": count must be >= 1");
+    if (a[2].get<long>() > 1000000) throw SweepError(p + "[2]", show(a[2]) + ": count must be <= 1e6");
+  };
+  if (spec.is_array()) {
+    if (spec.empty()) throw SweepError(path, "[]: a list of values must not be empty");
+    for (std::size_t k = 0; k < spec.size(); ++k) {
+      if (spec[k].is_object() || spec[k].is_array() || spec[k].is_null())
+        throw SweepError(path + "[" + std::to_string(k) + "]", show(spec[k]) + ": must be a number, string or boolean");
+      out.push_back({spec[k], path + "[" + std::to_string(k) + "]"});
+    }
+    return out;
+  }
+  if (spec.is_object()) {
+    if (spec.size() != 1)
+      throw SweepError(path, show(spec) + ": a range has exactly one of values, linspace, logspace, geomspace");
+    const std::string kind = spec.begin().key();
+    const json& a = spec.begin().value();
+    const std::string p = path + "." + kind;
+    if (kind == "values") return values_of(a, p);
+    if (kind != "linspace" && kind != "logspace" && kind != "geomspace")
+      throw SweepError(p, "unknown range kind (known: values, linspace, logspace, geomspace)");
+    check_count(a, p);
+    const double lo = a[0].get<double>(), hi = a[1].get<double>();
+    const long n = a[2].get<long>();
+    if (kind == "geomspace" && (lo <= 0 || hi <= 0)) throw SweepError(p, show(a) + ": geomspace needs positive ends");
+    for (long k = 0; k < n; ++k) {
+      const double f = n == 1 ? 0.0 : static_cast<double>(k) / (n - 1);
+      double v;
+      if (kind == "linspace")
+        v = lo + f * (hi - lo);
+      else if (kind == "logspace")
+        v = std::pow(10.0, lo + f * (hi - lo));
+      else
+        v = std::exp(std::log(lo) + f * (std::log(hi) - std::log(lo)));
+      if (k == n - 1) v = kind == "linspace" ? hi : (kind == "logspace" ? std::pow(10.0, hi) : hi);  // exact ends
+      out.push_back({v, p + "[" + std::to_string(k) + "]"});
+    }
+    return out;
+  }
+  if (spec.is_null()) throw SweepError(path, "null: must be a value, a list or a range");
+  return {{spec, path}};
+}
+
+std::vector<Point> expand_node(const json& node, const std::string& path);
+
+std::vector<Point> combine(const std::string& kind, const json& children, const std::string& path) {
+  if (!children.is_array() || children.empty())
+    throw SweepError(path, show(children).substr(0, 60) + ": " + kind + " takes a non-empty list of sweep nodes");
+  std::vector<std::vector<Point>> parts;
+  for (std::size_t k = 0; k < children.size(); ++k)
+    parts.push_back(expand_node(children[k], path + "[" + std::to_string(k) + "]"));
+  std::vector<Point> out;
+  if (kind == "union") {
+    for (auto& p : parts) out.insert(out.end(), p.begin(), p.end());
+    return out;
+  }
+  if (kind == "zip") {
+    for (std::size_t k = 1; k < parts.size(); ++k)
+      if (parts[k].size() != parts[0].size())
+        throw SweepError(path + "[" + std::to_string(k) + "]", std::to_string(parts[k].size()) +
+                                                                   " points: zip needs equal lengths, the first has " +
+                                                                   std::to_string(parts[0].size()));
+    for (std::size_t i = 0; i < parts[0].size(); ++i) {
+      Point p;
+      for (std::size_t k = 0; k < parts.size(); ++k)
+        for (auto& [name, t] : parts[k][i]) {
+          if (p.count(name)) throw SweepError(t.path, "parameter " + name + " is set twice in one zip");
+          p[name] = t;
+        }
+      out.push_back(std::move(p));
+    }
+    return out;
+  }
+  // product: the first child varies slowest
+  out = {Point{}};
+  for (const auto& part : parts) {
+    std::vector<Point> next;
+    next.reserve(out.size() * part.size());
+    for (const Point& a : out)
+      for (const Point& b : part) {
+        Point p = a;
+        for (auto& [name, t] : b) {
+          if (p.count(name)) throw SweepError(t.path, "parameter " + name + " is set twice in one product");
+          p[name] = t;
+        }
+        next.push_back(std::move(p));
+      }
+    out.swap(next);
+    if (out.size() > 10'000'000) throw SweepError(path, "more than 1e7 points");
+  }
+  return out;
+}
+
+std::vector<Point> expand_node(const json& node, const std::string& path) {
+  if (!node.is_object() || node.empty())
+    throw SweepError(path, show(node).substr(0, 60) + ": a sweep node is a non-empty object");
+  if (node.size() == 1) {
+    const std::string k = node.begin().key();
+    if (k == "product" || k == "zip" || k == "union") return combine(k, node.begin().value(), path + "." + k);
+  }
+  // an axes object: each key a parameter, several keys are their product
+  json axes = json::array();
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    const std::string p = path + "." + it.key();
+    if (it.key() == "product" || it.key() == "zip" || it.key() == "union")
+      throw SweepError(p, "a combinator must be the only key of its node");
+    if (!sweepable().count(it.key())) throw SweepError(p, "unknown parameter (known: " + known_list() + ")");
+  }
+  std::vector<Point> out = {Point{}};
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    const std::vector<Tagged> vals = values_of(it.value(), path + "." + it.key());
+    std::vector<Point> next;
+    for (const Point& a : out)
+      for (const Tagged& v : vals) {
+        Point p = a;
+        p[it.key()] = v;
+        next.push_back(std::move(p));
+      }
+    out.swap(next);
+  }
+  return out;
+}
+
+double as_number(const Tagged& t, const std::string& name) {
+  if (t.value.is_number()) return t.value.get<double>();
+  if (t.value.is_boolean()) return t.value.get<bool>() ? 1 : 0;
+  if (t.value.is_string() && t.value.get<std::string>() == "inf") return INFINITY;
+  throw SweepError(t.path, show(t.value) + ": " + name + " must be a number here");
+}
+
+/// Evaluates an expression with the point's numeric parameters as variables.
+double evaluate(const std::string& expr, const Point& point, const std::string& path) {
+  mu::Parser parser;
+  std::map<std::string, double> vars;
+  for (const auto& [name, t] : point) {
+    if (name.find('.') != std::string::npos) continue;
+    if (t.value.is_number() || t.value.is_boolean() || (t.value.is_string() && t.value.get<std::string>() == "inf"))
+      vars[name] = as_number(t, name);
+  }
+  try {
+    for (auto& [name, v] : vars) parser.DefineVar(name, &v);
+    parser.DefineConst("inf", INFINITY);
+    parser.SetExpr(expr);
+    return parser.Eval();
+  } catch (const mu::Parser::exception_type& e) {
+    throw SweepError(path, "\"" + expr + "\": " + e.GetMsg());
+  }
+}
+
+void set_field(json& job, const std::string& name, const json& value) {
+  const auto dot = name.find('.');
+  if (dot == std::string::npos)
+    job[name] = value;
+  else
+    job[name.substr(0, dot)][name.substr(dot + 1)] = value;
+}
+
+}  // namespace
+
+std::string sha256_hex(const std::string& bytes) {
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int len = 0;
+  EVP_Digest(bytes.data(), bytes.size(), digest, &len, EVP_sha256(), nullptr);
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (unsigned i = 0; i < len; ++i) {
+    out += hex[digest[i] >> 4];
+    out += hex[digest[i] & 15];
+  }
+  return out;
+}
+
+std::string job_key(const SimConfig& c) {
+  json j = c.to_json();
+  // settings that cannot change a finished run's result: checkpoint cadence, trajectory
+  // output, the Verlet skin (force sums do not depend on the list) and the blow-up threshold
+  j["run"].erase("checkpoint_interval");
+  j["run"].erase("trajectory_every_steps");
+  j.erase("skin");
+  j.erase("max_overlap");
+  return sha256_hex(j.dump() + "\nengine " BEVERLOO_VERSION);
+}
+
+Sweep Sweep::parse(const json& j, const std::string& default_name) {
+  if (!j.is_object()) throw SweepError("(top level)", "a sweep file is a JSON object");
+  static const std::set<std::string> keys = {"name", "comment", "base", "run", "sweep", "derived", "where", "replicas",
+                                             "$schema"};
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (!keys.count(it.key()))
+      throw SweepError(it.key(), "unknown field (known: name, comment, base, run, sweep, derived, where, replicas)");
+  Sweep s;
+  s.source = j;
+  s.name = default_name;
+  if (j.contains("name")) {
+    if (!j["name"].is_string() || j["name"].get<std::string>().empty())
+      throw SweepError("name", show(j["name"]) + ": must be a non-empty string");
+    s.name = j["name"].get<std::string>();
+  }
+  if (j.contains("comment")) {
+    if (!j["comment"].is_string()) throw SweepError("comment", show(j["comment"]) + ": must be a string");
+    s.comment = j["comment"].get<std::string>();
+  }
+  for (const char* obj : {"base", "run", "derived"})
+    if (j.contains(obj) && !j[obj].is_object()) throw SweepError(obj, show(j[obj]).substr(0, 60) + ": must be an object");
+  if (j.contains("derived"))
+    for (auto it = j["derived"].begin(); it != j["derived"].end(); ++it) {
+      if (!it.value().is_string()) throw SweepError("derived." + it.key(), show(it.value()) + ": must be an expression string");
+      if (!sweepable().count(it.key()) || it.key().find('.') != std::string::npos)
+        throw SweepError("derived." + it.key(), "unknown parameter (known: " + known_list() + ")");
+    }
+  if (j.contains("where")) {
+    if (!j["where"].is_array()) throw SweepError("where", show(j["where"]) + ": must be a list of expressions");
+    for (std::size_t k = 0; k < j["where"].size(); ++k)
+      if (!j["where"][k].is_string())
+        throw SweepError("where[" + std::to_string(k) + "]", show(j["where"][k]) + ": must be an expression string");
+  }
+  if (j.contains("replicas") && (!j["replicas"].is_number_integer() || j["replicas"].get<long>() < 1 ||
+                                 j["replicas"].get<long>() > 100000))
+    throw SweepError("replicas", show(j["replicas"]) + ": must be an integer in [1, 100000]");
+  if (j.contains("sweep")) (void)expand_node(j["sweep"], "sweep");  // structure errors now
+  return s;
+}
+
+std::vector<JobSpec> Sweep::expand() const {
+  const json& j = source;
+  std::vector<Point> points = j.contains("sweep") ? expand_node(j["sweep"], "sweep") : std::vector<Point>{Point{}};
+  const long replicas = j.value("replicas", 1L);
+  if (replicas > 1) {
+    std::vector<Point> with;
+    for (const Point& p : points)
+      for (long r = 0; r < replicas; ++r) {
+        Point q = p;
+        if (q.count("replica")) throw SweepError(q["replica"].path, "replica is set by \"replicas\"; do not sweep it too");
+        q["replica"] = {r, "replicas"};
+        with.push_back(std::move(q));
+      }
+    points.swap(with);
+  }
+  const json base = j.value("base", json::object());
+  for (auto it = base.begin(); it != base.end(); ++it)
+    if (it.key() == "lambda" || it.key() == "dissipation_scale") continue;
+  std::vector<JobSpec> jobs;
+  jobs.reserve(points.size());
+  std::set<std::string> seen;
+  for (Point& p : points) {
+    // base values that the sweep labels (lambda, dissipation_scale) also take part in expressions
+    for (const char* label : {"lambda", "dissipation_scale"})
+      if (!p.count(label) && base.contains(label)) p[label] = {base[label], std::string("base.") + label};
+    for (auto it = base.begin(); it != base.end(); ++it)
+      if (!p.count(it.key()) && (it.value().is_number() || it.value().is_boolean()))
+        p[it.key()] = {it.value(), "base." + it.key()};
+    // derived parameters: evaluated until all are resolved (they may use each other)
+    std::set<std::string> pending;
+    if (j.contains("derived"))
+      for (auto it = j["derived"].begin(); it != j["derived"].end(); ++it) pending.insert(it.key());
+    std::set<std::string> derived_names = pending;
+    while (!pending.empty()) {
+      bool progress = false;
+      for (auto it = pending.begin(); it != pending.end();) {
+        const std::string expr = j["derived"][*it].get<std::string>();
+        bool ready = true;
+        for (const auto& other : pending)
+          if (other != *it && expr.find(other) != std::string::npos) ready = false;
+        if (!ready) {
+          ++it;
+          continue;
+        }
+        const double v = evaluate(expr, p, "derived." + *it);
+        p[*it] = {std::isinf(v) ? json("inf") : json(v), "derived." + *it};
+        it = pending.erase(it);
+        progress = true;
+      }
+      if (!progress) throw SweepError("derived", "the derived parameters depend on each other in a cycle");
+    }
+    bool keep = true;
+    if (j.contains("where"))
+      for (std::size_t k = 0; k < j["where"].size() && keep; ++k)
+        keep = evaluate(j["where"][k].get<std::string>(), p, "where[" + std::to_string(k) + "]") != 0;
+    if (!keep) continue;
+
+    JobSpec spec;
+    json job = base;
+    job.erase("lambda");
+    job.erase("dissipation_scale");
+    if (j.contains("run")) job["run"].update(j["run"]);
+    const bool sets_zeta = (p.count("zeta") && p["zeta"].path.rfind("base.", 0) != 0) || derived_names.count("zeta");
+    const bool sets_mu = (p.count("mu") && p["mu"].path.rfind("base.", 0) != 0) || derived_names.count("mu");
+    for (auto& [name, t] : p) {
+      if (name == "lambda" || name == "dissipation_scale") continue;
+      set_field(job, name, t.value);
+    }
+    if (p.count("dissipation_scale")) spec.dissipation_scale = as_number(p["dissipation_scale"], "dissipation_scale");
+    if (p.count("lambda")) {
+      const double lambda = as_number(p["lambda"], "lambda");
+      if (lambda < 0 || std::isnan(lambda)) throw SweepError(p["lambda"].path, show(p["lambda"].value) + ": lambda must be >= 0 or \"inf\"");
+      spec.lambda = lambda;
+      if (!sets_zeta && !sets_mu) {
+        const double s = spec.dissipation_scale.value_or(1.0);
+        if (s <= 0) throw SweepError(p["dissipation_scale"].path, "dissipation_scale must be > 0");
+        const double zeta_ref = s / std::sqrt(10.0);
+        if (lambda == 0) {
+          job["zeta"] = 0.0;
+          job["mu"] = s * 10 * std::sqrt(10.0);
+        } else if (std::isinf(lambda)) {
+          job["zeta"] = zeta_ref;
+          job["mu"] = 0.0;
+        } else {
+          job["zeta"] = zeta_ref;
+          job["mu"] = zeta_ref / lambda;
+        }
+      }
+    }
+    try {
+      spec.config = SimConfig::from_json(job);
+    } catch (const ConfigError& e) {
+      const std::string field = e.field();
+      std::string path = "base." + field, value;
+      for (const auto& [name, t] : p)
+        if (name == field || (field.rfind("theta_w", 0) == 0 && name == "theta_w_deg")) {
+          path = t.path;
+          value = show(t.value) + ": ";
+        }
+      if (value.empty() && field.find('.') == std::string::npos && job.contains(field)) value = show(job[field]) + ": ";
+      const std::string what = e.what();
+      throw SweepError(path, value + what.substr(what.find(": ") + 2));
+    }
+    spec.job = spec.config.to_json();
+    spec.key = job_key(spec.config);
+    json point = json::object();
+    for (auto& [name, t] : p)
+      if (t.path.rfind("base.", 0) != 0) point[name] = t.value;
+    spec.point = point;
+    if (!seen.insert(spec.key).second) continue;  // the same job twice in one sweep runs once
+    jobs.push_back(std::move(spec));
+  }
+  return jobs;
+}
+
+}  // namespace beverloo

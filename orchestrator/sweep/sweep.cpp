@@ -1,5 +1,7 @@
 #include "sweep.h"
 
+#include "engine/integrate/time_step.h"
+
 #include <openssl/evp.h>
 
 #include <cmath>
@@ -277,8 +279,6 @@ std::vector<JobSpec> Sweep::expand() const {
     points.swap(with);
   }
   const json base = j.value("base", json::object());
-  for (auto it = base.begin(); it != base.end(); ++it)
-    if (it.key() == "lambda" || it.key() == "dissipation_scale") continue;
   std::vector<JobSpec> jobs;
   jobs.reserve(points.size());
   std::set<std::string> seen;
@@ -352,9 +352,14 @@ std::vector<JobSpec> Sweep::expand() const {
     }
     try {
       spec.config = SimConfig::from_json(job);
+      (void)choose_time_step(spec.config);  // an explicit dt the stiffest term cannot take
     } catch (const ConfigError& e) {
       const std::string field = e.field();
       std::string path = "base." + field, value;
+      if (field.rfind("run.", 0) == 0 && j.contains("run") && j["run"].contains(field.substr(4))) {
+        path = field;
+        value = show(j["run"][field.substr(4)]) + ": ";
+      }
       for (const auto& [name, t] : p)
         if (name == field || (field.rfind("theta_w", 0) == 0 && name == "theta_w_deg")) {
           path = t.path;

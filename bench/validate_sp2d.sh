@@ -22,7 +22,7 @@ JOB
   done
 done
 ls "$OUT"/jobs/*.json | xargs -P "$WORKERS" -I{} sh -c \
-  'n=$(basename {} .json); '"$BIN"' simulate {} -o '"$OUT"'/runs/$n --resume --progress quiet --json > '"$OUT"'/runs_$n.json 2> '"$OUT"'/runs_$n.log || echo "FAILED $n"'
+  'n=$(basename {} .json); [ -f '"$OUT"'/runs/$n/summary.json ] || '"$BIN"' simulate {} -o '"$OUT"'/runs/$n --overwrite --progress quiet --json > '"$OUT"'/runs_$n.json 2> '"$OUT"'/runs_$n.log || echo "FAILED $n"'
 /usr/bin/python3 - "$OUT" <<'PY'
 import glob, json, math, os, sys
 import numpy as np

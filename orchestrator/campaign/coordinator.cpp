@@ -1,6 +1,7 @@
 #include "coordinator.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -105,7 +106,8 @@ class Coordinator {
         if (!job) break;
         launch(*job);
       }
-      for (const WorkerExit& e : ex_.reap()) finished(e);
+      const std::vector<WorkerExit> exits = ex_.reap();
+      for (const WorkerExit& e : exits) finished(e);
       if (Clock::now() - last_adopt_check > std::chrono::milliseconds(500)) {
         check_adopted();
         check_timeouts();
@@ -117,12 +119,22 @@ class Coordinator {
         progress(c, start, true);
         return c.failed > 0 ? exit_code::kJobsFailed : exit_code::kOk;
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      if (exits.empty()) wait_for_event();  // something ended: claim the next job at once
     }
   }
 
  private:
   std::string job_dir(const std::string& dir) const { return (fs::path(o_.dir) / dir).string(); }
+
+  /// Sleeps until a worker exits (SIGCHLD, blocked so that it queues) or 100 ms pass, so that a
+  /// finished job is ingested and the next one started at once rather than on a polling tick.
+  static void wait_for_event() {
+    sigset_t chld;
+    sigemptyset(&chld);
+    sigaddset(&chld, SIGCHLD);
+    const timespec timeout{0, 100'000'000};
+    sigtimedwait(&chld, nullptr, &timeout);
+  }
 
   void launch(const ClaimedJob& job) {
     const std::string dir = job_dir(job.dir);
@@ -306,6 +318,10 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
   const std::int64_t campaign = sweep ? store.create_campaign(*sweep, text, jobs) : store.latest_campaign();
   if (campaign < 0) throw SweepError(o.dir, "holds no campaign; give a sweep file");
   const std::atomic<bool>* stop = install_stop_handlers();
+  sigset_t chld;  // queued for wait_for_event(); workers unblock it before exec
+  sigemptyset(&chld);
+  sigaddset(&chld, SIGCHLD);
+  sigprocmask(SIG_BLOCK, &chld, nullptr);
   LocalExecutor ex(o.workers);
   Coordinator c(db, campaign, o, ex);
   return c.run(stop);

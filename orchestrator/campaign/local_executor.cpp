@@ -32,6 +32,9 @@ std::int64_t LocalExecutor::start(const ClaimedJob& job, const std::string& job_
       ::close(logfd);
     }
     ::setpgid(0, 0);  // Ctrl-C reaches the coordinator, which stops the workers in order
+    sigset_t none;    // the coordinator blocks SIGCHLD; the worker starts with a clean mask
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
     execl("/proc/self/exe", "beverloo", "worker", spec.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }

@@ -272,9 +272,13 @@ nlohmann::json SimConfig::to_json() const {
 
 std::uint64_t SimConfig::effective_seed() const {
   if (seed) return *seed;
+  // only what defines the trajectory: not the run controls, not the Verlet skin (the force
+  // sums do not depend on it), not the blow-up threshold
   json j = to_json();
   j.erase("run");
   j.erase("seed");
+  j.erase("skin");
+  j.erase("max_overlap");
   return hash64(j.dump());
 }
 

@@ -112,8 +112,8 @@ struct SimConfig {
   nlohmann::json to_json() const;
   /// Fills the dimension-dependent defaults and checks every field; throws ConfigError.
   void resolve_and_validate();
-  /// The seed: explicit, or a hash of the canonical physics and protocol parameters
-  /// (run controls excluded: t_max or checkpoint cadence must not change the trajectory).
+  /// The seed: explicit, or a hash of the canonical physics and protocol parameters (run
+  /// controls, skin and max_overlap excluded: they must not change the trajectory).
   std::uint64_t effective_seed() const;
 
   // Derived sizes (valid after resolve_and_validate).

@@ -124,6 +124,10 @@ TEST(Config, CanonicalJsonRoundTripsAndSeedDependsOnPhysicsOnly) {
   json longer = minimal();
   longer["run"] = {{"t_max", 5000}, {"checkpoint_interval", 7}};
   EXPECT_EQ(SimConfig::from_json(longer).effective_seed(), a.effective_seed()) << "run controls must not change the trajectory";
+  json numerics = minimal();
+  numerics["skin"] = 0.5;
+  numerics["max_overlap"] = 0.7;
+  EXPECT_EQ(SimConfig::from_json(numerics).effective_seed(), a.effective_seed()) << "numerical settings must not change the trajectory";
   for (const auto& [key, value] : std::vector<std::pair<std::string, json>>{
            {"w", 6.5}, {"zeta", 0.31}, {"mu", 1e-9}, {"E_sp", 101}, {"replica", 1}, {"N", 1601}, {"theta_w_deg", 60}}) {
     json j = minimal();

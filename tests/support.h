@@ -4,7 +4,7 @@
 
 #include "engine/config.h"
 #include "engine/forces/force_field.h"
-#include "engine/geometry/hopper.h"
+#include "engine/geometry/make_hopper.h"
 #include "engine/integrate/fire.h"
 #include "engine/protocol/placement.h"
 #include "engine/rng.h"
@@ -27,10 +27,7 @@ inline SimConfig small_config(int dim, int n, double w, double zeta = 0, double 
 
 template <int D>
 Hopper<D> hopper_for(const SimConfig& c) {
-  if constexpr (D == 2)
-    return Hopper<2>(c.W, c.w, units::deg_to_rad(c.theta_w_left_deg), units::deg_to_rad(c.theta_w_right_deg));
-  else
-    return Hopper<3>(c.W, c.w);
+  return make_hopper<D>(c);
 }
 
 /// N particles placed at random (dense: overlaps remain unless minimised).

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "../geometry/make_hopper.h"
 #include "../integrate/fire.h"
 #include "../integrate/velocity_verlet.h"
 #include "../io/result_file.h"
@@ -16,14 +17,6 @@
 
 namespace beverloo {
 namespace {
-
-template <int D>
-Hopper<D> make_hopper(const SimConfig& c) {
-  if constexpr (D == 2)
-    return Hopper<2>(c.W, c.w, units::deg_to_rad(c.theta_w_left_deg), units::deg_to_rad(c.theta_w_right_deg));
-  else
-    return Hopper<3>(c.W, c.w);
-}
 
 std::int64_t steps_for(double time, double dt) { return std::max<std::int64_t>(1, std::llround(time / dt)); }
 

@@ -296,18 +296,7 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
   std::vector<JobSpec> jobs;
   std::string text;
   if (sweep_path) {
-    std::ifstream in(*sweep_path);
-    if (!in) throw SweepError(*sweep_path, "cannot read the sweep file");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw SweepError(*sweep_path, std::string("is not valid JSON: ") + e.what());
-    }
-    sweep = Sweep::parse(j, fs::path(*sweep_path).stem().string());
+    sweep = Sweep::load(*sweep_path, &text);
     jobs = sweep->expand();
   }
   fs::create_directories(fs::path(o.dir) / "jobs");

@@ -20,16 +20,8 @@ namespace beverloo {
 namespace fs = std::filesystem;
 namespace {
 
-Sweep load_sweep(const std::string& path, std::vector<JobSpec>* jobs) {
-  std::ifstream in(path);
-  if (!in) throw SweepError(path, "cannot read the sweep file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw SweepError(path, std::string("is not valid JSON: ") + e.what());
-  }
-  Sweep s = Sweep::parse(j, fs::path(path).stem().string());
+Sweep load_sweep(const std::string& path, std::vector<JobSpec>* jobs, std::string* text = nullptr) {
+  Sweep s = Sweep::load(path, text);
   if (jobs) *jobs = s.expand();
   return s;
 }
@@ -210,15 +202,13 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   create->callback([=, &exit_status] {
     exit_status = guarded("campaign create", [&] {
       std::vector<JobSpec> jobs;
-      const Sweep s = load_sweep(*create_path, &jobs);
-      std::ifstream in(*create_path);
-      std::stringstream text;
-      text << in.rdbuf();
+      std::string text;
+      const Sweep s = load_sweep(*create_path, &jobs, &text);
       fs::create_directories(fs::path(*dir) / "jobs");
       CoordinatorLock lock(*dir);
       db::Database db((fs::path(*dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
       db::open_store(db);
-      CampaignStore(db).create_campaign(s, text.str(), jobs);
+      CampaignStore(db).create_campaign(s, text, jobs);
       std::printf("campaign \"%s\" with %zu jobs in %s\n", s.name.c_str(), jobs.size(), dir->c_str());
       return exit_code::kOk;
     });

@@ -5,6 +5,9 @@
 #include <openssl/evp.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <muParser.h>
 #include <set>
 
@@ -221,6 +224,21 @@ std::string job_key(const SimConfig& c) {
   j.erase("skin");
   j.erase("max_overlap");
   return sha256_hex(j.dump() + "\nengine " BEVERLOO_VERSION);
+}
+
+Sweep Sweep::load(const std::string& path, std::string* text) {
+  std::ifstream in(path);
+  if (!in) throw SweepError(path, "cannot read the sweep file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    throw SweepError(path, std::string("is not valid JSON: ") + e.what());
+  }
+  if (text) *text = ss.str();
+  return parse(j, std::filesystem::path(path).stem().string());
 }
 
 Sweep Sweep::parse(const json& j, const std::string& default_name) {

@@ -54,6 +54,9 @@ struct Sweep {
   nlohmann::json source;  ///< the file as parsed
   /// Parses and checks the structure; throws SweepError.
   static Sweep parse(const nlohmann::json& j, const std::string& default_name = "sweep");
+  /// Reads and parses a sweep file (named after the file unless it says otherwise); the file's
+  /// text, which identifies the campaign, goes to *text if given.
+  static Sweep load(const std::string& path, std::string* text = nullptr);
   /// All jobs, each validated by the engine's own rules; throws SweepError naming the path.
   std::vector<JobSpec> expand() const;
 };

@@ -24,6 +24,19 @@ struct TempDb {
 };
 
 Sweep sweep_of(const json& j) { return Sweep::parse(j, "test"); }
+
+/// A fresh, migrated store in a temporary file.
+class StoreTest : public ::testing::Test {
+ protected:
+  TempDb t;
+  db::Database db{t.path, db::Database::Mode::ReadWrite};
+  CampaignStore store{db};
+  void SetUp() override { db::open_store(db); }
+  std::int64_t create(const json& sweep) {
+    const Sweep s = sweep_of(sweep);
+    return store.create_campaign(s, sweep.dump(), s.expand());
+  }
+};
 json small(const json& sweep) { return {{"base", {{"N", 50}, {"W", 12}, {"zeta", 0.3}, {"mu", 0.0}}}, {"sweep", sweep}}; }
 
 TEST(Store, MigratesAnEmptyFileAndChecksIdentity) {
@@ -55,11 +68,7 @@ TEST(Store, RefusesAnotherApplicationsDatabase) {
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM sqlite_schema"), 1) << "nothing may be added to a foreign file";
 }
 
-TEST(Store, CampaignsShareJobsAndRecreatingChangesNothing) {
-  TempDb t;
-  db::Database db(t.path, db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
+TEST_F(StoreTest, CampaignsShareJobsAndRecreatingChangesNothing) {
   const json a = small({{"w", {3, 4, 5}}});
   const json b = small({{"w", {5, 6}}});
   const Sweep sa = sweep_of(a), sb = sweep_of(b);
@@ -72,14 +81,8 @@ TEST(Store, CampaignsShareJobsAndRecreatingChangesNothing) {
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM jobs WHERE w > 4 AND lambda > 1e300"), 2) << "typed columns; lambda = inf";
 }
 
-TEST(Store, ClaimIngestIsIdempotentAndSharedResultsAreNotRerun) {
-  TempDb t;
-  db::Database db(t.path, db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
-  const json a = small({{"w", {3, 4}}});
-  const Sweep sa = sweep_of(a);
-  const std::int64_t id = store.create_campaign(sa, a.dump(), sa.expand());
+TEST_F(StoreTest, ClaimIngestIsIdempotentAndSharedResultsAreNotRerun) {
+  const std::int64_t id = create(small({{"w", {3, 4}}}));
   auto job = store.claim_next(id, "local", "host");
   ASSERT_TRUE(job);
   EXPECT_EQ(job->attempt_no, 1);
@@ -97,21 +100,13 @@ TEST(Store, ClaimIngestIsIdempotentAndSharedResultsAreNotRerun) {
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM velocity_profiles"), 2);
   EXPECT_EQ(store.counts(id).done, 1);
   // another campaign containing the finished job does not run it again
-  const json b = small({{"w", {3}}});
-  const Sweep sb = sweep_of(b);
-  const std::int64_t id2 = store.create_campaign(sb, b.dump(), sb.expand());
+  const std::int64_t id2 = create(small({{"w", {3}}}));
   EXPECT_FALSE(store.claim_next(id2, "local", "host")) << "the job already has a result";
   EXPECT_EQ(store.counts(id2).done, 1);
 }
 
-TEST(Store, RetryPolicyChargesScienceFailuresOnly) {
-  TempDb t;
-  db::Database db(t.path, db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
-  const json a = small({{"w", {3, 4}}});
-  const Sweep sa = sweep_of(a);
-  const std::int64_t id = store.create_campaign(sa, a.dump(), sa.expand());
+TEST_F(StoreTest, RetryPolicyChargesScienceFailuresOnly) {
+  const std::int64_t id = create(small({{"w", {3, 4}}}));
   const int max_retries = 1;
   // infrastructure failures: back to pending, budget untouched, however often
   for (int k = 0; k < 5; ++k) {
@@ -136,11 +131,7 @@ TEST(Store, RetryPolicyChargesScienceFailuresOnly) {
   EXPECT_EQ(store.counts(id).cancelled, 2);
 }
 
-TEST(Store, InsertingTenThousandJobsIsFast) {
-  TempDb t;
-  db::Database db(t.path, db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
+TEST_F(StoreTest, InsertingTenThousandJobsIsFast) {
   const json j = {{"base", {{"N", 50}, {"W", 12}}},
                   {"sweep", {{"product", {{{"w", {{"linspace", {2, 10, 100}}}}}, {{"lambda", {{"logspace", {-3, 2, 100}}}}}}}}}};
   const auto t0 = std::chrono::steady_clock::now();

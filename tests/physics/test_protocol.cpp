@@ -53,13 +53,11 @@ template <int D>
 void check_reinjection_keeps_n_without_overlap(const SimConfig& c) {
   HopperRun<D> run(c, RunOptions{});
   run.prepare();
-  std::int64_t last = 0;
   double worst = 0;
   for (int chunk = 0; chunk < 60; ++chunk) {
     run.advance(500);
-    // right after each chunk: every particle that was reinjected during it was placed without
-    // overlap; check the placement rule directly on the most recent reinjections
-    if (run.record().reinjections > last) last = run.record().reinjections;
+    // N is fixed, and no overlap ever grows large (a reinjection into an occupied spot would
+    // start at a huge overlap); the placement rule itself is checked in the next test
     EXPECT_EQ(run.state().size(), c.N);
     worst = std::max(worst, run.record().max_overlap_seen);
   }
@@ -105,7 +103,9 @@ TEST(Reinjection, PlacementTouchesAPileParticleAndOverlapsNothing) {
       EXPECT_GT(gap, -1e-9) << "overlap with " << k;
       nearest_gap = std::min(nearest_gap, gap);
     }
-    if (touched) EXPECT_LT(nearest_gap, 1e-9) << "a touching placement must be at contact";
+    if (touched) {
+      EXPECT_LT(nearest_gap, 1e-9) << "a touching placement must be at contact";
+    }
     for (int wall = 0; wall < Hopper<2>::kNumWalls; ++wall)
       EXPECT_GE((s.x[i] - run.hopper().nearest_point(wall, s.x[i])).norm(), 0.5 * s.sigma(i) - 1e-12);
     EXPECT_EQ(s.exited[i], 0);
@@ -130,8 +130,12 @@ TEST(Flow, FlowingCaseGivesPositiveQWithFiniteError) {
     // velocity profile: particles move down (v_g > 0) just above the orifice
     ASSERT_FALSE(r.profile_v_g.empty());
     EXPECT_GT(r.profile_v_g[2], 0);
-    if (c.mu > 0) EXPECT_GT(r.mean_F_friction, 0);
-    if (c.zeta > 0) EXPECT_GT(r.mean_F_drag, 0);
+    if (c.mu > 0) {
+      EXPECT_GT(r.mean_F_friction, 0);
+    }
+    if (c.zeta > 0) {
+      EXPECT_GT(r.mean_F_drag, 0);
+    }
     // Q is the exited reference area per time in the window
     double area = 0;
     for (std::size_t k = 0; k < r.exit_time.size(); ++k)

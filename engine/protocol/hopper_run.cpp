@@ -36,9 +36,9 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       rng_(c.effective_seed()),
       exits_(hopper_, c.reinjection.drop_depth_diameters, c.N),
       reinjector_(hopper_, c.reinjection, c.N),
-      pile_finder_(c.N),
       obs_(c),
-      estimator_(c.run) {
+      estimator_(c.run),
+      pile_finder_(c.N) {
   ff_ = std::make_unique<ForceField<D>>(c_, hopper_);
   rec_.exit_time.reserve(1 << 16);
   rec_.exit_particle.reserve(1 << 16);

@@ -77,7 +77,9 @@ void check_list_against_brute_force(int n, std::uint64_t seed) {
   EXPECT_FALSE(list.update(s, h)) << "no rebuild needed";
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
-      if ((s.x[i] - s.x[j]).norm() < 0.5 * (s.sigma(i) + s.sigma(j))) EXPECT_EQ(listed.count({i, j}), 1u);
+      if ((s.x[i] - s.x[j]).norm() < 0.5 * (s.sigma(i) + s.sigma(j))) {
+        EXPECT_EQ(listed.count({i, j}), 1u);
+      }
   s.x[0][0] += c.skin;  // one particle moved more than half the skin
   EXPECT_TRUE(list.update(s, h));
 }

@@ -1,0 +1,161 @@
+#include "fit.h"
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multifit_nlinear.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace beverloo {
+namespace {
+
+struct Problem {
+  std::size_t n, p;
+  std::function<double(std::size_t i, const double* x)> model;  ///< model value at point i
+  const std::vector<double>* y;
+};
+
+int residuals(const gsl_vector* x, void* data, gsl_vector* f) {
+  const Problem& pr = *static_cast<Problem*>(data);
+  for (std::size_t i = 0; i < pr.n; ++i) {
+    const double m = pr.model(i, x->data);
+    if (!std::isfinite(m)) return GSL_EDOM;
+    gsl_vector_set(f, i, m - (*pr.y)[i]);
+  }
+  return GSL_SUCCESS;
+}
+
+struct Solution {
+  std::vector<double> x;
+  std::vector<double> cov;  ///< p x p
+  double chi2 = INFINITY;
+  bool ok = false;
+};
+
+/// One trust-region solve from x0; weights 1/sigma^2. Jacobian by GSL's finite differences.
+Solution solve(Problem& pr, const std::vector<double>& x0, const std::vector<double>& sigma) {
+  Solution s;
+  gsl_set_error_handler_off();
+  gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
+  gsl_multifit_nlinear_fdf fdf;
+  fdf.f = residuals;
+  fdf.df = nullptr;
+  fdf.fvv = nullptr;
+  fdf.n = pr.n;
+  fdf.p = pr.p;
+  fdf.params = &pr;
+  gsl_multifit_nlinear_workspace* w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, pr.n, pr.p);
+  std::vector<double> xv = x0, wts(pr.n);
+  for (std::size_t i = 0; i < pr.n; ++i) wts[i] = 1.0 / (sigma[i] * sigma[i]);
+  gsl_vector_view xview = gsl_vector_view_array(xv.data(), pr.p);
+  gsl_vector_view wview = gsl_vector_view_array(wts.data(), pr.n);
+  int info = 0;
+  if (gsl_multifit_nlinear_winit(&xview.vector, &wview.vector, &fdf, w) == GSL_SUCCESS &&
+      gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 1e-10, nullptr, nullptr, &info, w) == GSL_SUCCESS) {
+    gsl_vector* f = gsl_multifit_nlinear_residual(w);  // already weighted: sqrt(w_i) r_i
+    double chi2 = 0;
+    gsl_blas_ddot(f, f, &chi2);
+    gsl_matrix* cov = gsl_matrix_alloc(pr.p, pr.p);
+    gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0.0, cov);
+    s.x.assign(gsl_multifit_nlinear_position(w)->data, gsl_multifit_nlinear_position(w)->data + pr.p);
+    s.cov.assign(cov->data, cov->data + pr.p * pr.p);
+    gsl_matrix_free(cov);
+    s.chi2 = chi2;
+    s.ok = std::isfinite(chi2) && std::all_of(s.cov.begin(), s.cov.end(), [](double v) { return std::isfinite(v); });
+  }
+  gsl_multifit_nlinear_free(w);
+  return s;
+}
+
+void check_inputs(const char* what, const std::vector<double>& x, const std::vector<double>& y,
+                  const std::vector<double>& e, std::size_t min_points) {
+  if (x.size() != y.size() || x.size() != e.size()) throw FitError(std::string(what) + ": inputs of different lengths");
+  if (x.size() < min_points)
+    throw FitError(std::string(what) + ": " + std::to_string(x.size()) + " points, need at least " +
+                   std::to_string(min_points) + " (more than the parameters)");
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!(e[i] > 0) || !std::isfinite(y[i]) || !std::isfinite(x[i]))
+      throw FitError(std::string(what) + ": point " + std::to_string(i) + " has no finite value with a positive error");
+  if (*std::max_element(y.begin(), y.end()) == *std::min_element(y.begin(), y.end()))
+    throw FitError(std::string(what) + ": all values equal; the law cannot be fitted to constant data");
+}
+
+}  // namespace
+
+double beverloo_model(double w, double C, double k, double beta) { return C * std::pow(w - k, beta); }
+double crossover_model(int d, double lambda, double lambda_c, double b) {
+  return d - 1 - 0.5 * std::tanh(std::log10(lambda / lambda_c) / b);
+}
+
+BeverlooFit fit_beverloo(const std::vector<double>& w, const std::vector<double>& Q, const std::vector<double>& Q_err) {
+  check_inputs("Beverloo fit", w, Q, Q_err, 4);
+  for (double q : Q)
+    if (q <= 0) throw FitError("Beverloo fit: Q must be > 0 for every point used (leave clogged points out)");
+  const double w_min = *std::min_element(w.begin(), w.end());
+  // Parameters (log C, u, beta) with k = w_min - exp(u): k stays below the smallest w.
+  Problem pr{w.size(), 3, [&](std::size_t i, const double* x) {
+               return std::exp(x[0]) * std::pow(w[i] - (w_min - std::exp(x[1])), x[2]);
+             }, &Q};
+  Solution best;
+  for (double k0 : {w_min - 0.5, w_min - 1.5, w_min - 3.0, 0.0, -2.0}) {  // several starts: the valley in k is long
+    if (k0 >= w_min) continue;
+    // initial beta and C from a straight line in log-log at this k
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      const double lx = std::log(w[i] - k0), ly = std::log(Q[i]);
+      sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+    }
+    const double n = static_cast<double>(w.size());
+    const double beta0 = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    const double logC0 = (sy - beta0 * sx) / n;
+    Solution s = solve(pr, {logC0, std::log(w_min - k0), beta0}, Q_err);
+    if (s.ok && s.chi2 < best.chi2) best = s;
+  }
+  if (!best.ok) throw FitError("Beverloo fit: the solver did not converge from any start");
+  BeverlooFit f;
+  f.points = static_cast<int>(w.size());
+  f.C = std::exp(best.x[0]);
+  f.k = w_min - std::exp(best.x[1]);
+  f.beta = best.x[2];
+  // standard errors by the delta method through the transformation
+  f.C_err = f.C * std::sqrt(best.cov[0]);
+  f.k_err = std::exp(best.x[1]) * std::sqrt(best.cov[4]);
+  f.beta_err = std::sqrt(best.cov[8]);
+  f.chi2_red = w.size() > 3 ? best.chi2 / (w.size() - 3) : 0;
+  return f;
+}
+
+CrossoverFit fit_crossover(int d, const std::vector<double>& lambda, const std::vector<double>& beta,
+                           const std::vector<double>& beta_err) {
+  check_inputs("crossover fit", lambda, beta, beta_err, 3);
+  for (double l : lambda)
+    if (!(l > 0) || !std::isfinite(l)) throw FitError("crossover fit: lambda must be finite and > 0 (the limits are not fitted)");
+  // Parameters (log10 lambda_c, log b): b > 0.
+  Problem pr{lambda.size(), 2, [&](std::size_t i, const double* x) {
+               return d - 1 - 0.5 * std::tanh((std::log10(lambda[i]) - x[0]) / std::exp(x[1]));
+             }, &beta};
+  const double lo = std::log10(*std::min_element(lambda.begin(), lambda.end()));
+  const double hi = std::log10(*std::max_element(lambda.begin(), lambda.end()));
+  Solution best;
+  for (double frac : {0.5, 0.25, 0.75})
+    for (double b0 : {0.5, 1.0, 2.0}) {
+      Solution s = solve(pr, {lo + frac * (hi - lo), std::log(b0)}, beta_err);
+      if (s.ok && s.chi2 < best.chi2) best = s;
+    }
+  if (!best.ok) throw FitError("crossover fit: the solver did not converge from any start");
+  CrossoverFit f;
+  f.points = static_cast<int>(lambda.size());
+  f.log10_lambda_c = best.x[0];
+  f.log10_lambda_c_err = std::sqrt(best.cov[0]);
+  f.lambda_c = std::pow(10.0, best.x[0]);
+  f.lambda_c_err = f.lambda_c * std::log(10.0) * f.log10_lambda_c_err;
+  f.b = std::exp(best.x[1]);
+  f.b_err = f.b * std::sqrt(best.cov[3]);
+  f.chi2_red = lambda.size() > 2 ? best.chi2 / (lambda.size() - 2) : 0;
+  return f;
+}
+
+}  // namespace beverloo

@@ -1,0 +1,105 @@
+// The fitters recover known parameters from synthetic data, their one-sigma intervals cover the
+// truth about 68 % of the time, and degenerate input gives a message instead of NaN.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/rng.h"
+#include "reports/fit.h"
+
+namespace beverloo {
+namespace {
+
+double gaussian(Rng& rng) {  // Box-Muller
+  const double u1 = 1 - rng.uniform(), u2 = rng.uniform();
+  return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
+}
+
+TEST(BeverlooFit, RecoversParametersWithCalibratedErrors) {
+  const double C = 0.45, k = 1.5, beta = 0.5;  // drag-only-like
+  const std::vector<double> w = {3, 4, 5, 6, 7, 8, 9, 10};
+  int covered_beta = 0, covered_k = 0, covered_C = 0;
+  const int trials = 300;
+  double chi2_sum = 0;
+  for (int t = 0; t < trials; ++t) {
+    Rng rng(1000 + t);
+    std::vector<double> Q, err;
+    for (double x : w) {
+      const double q = beverloo_model(x, C, k, beta);
+      err.push_back(0.02 * q);
+      Q.push_back(q + err.back() * gaussian(rng));
+    }
+    const BeverlooFit f = fit_beverloo(w, Q, err);
+    covered_beta += std::fabs(f.beta - beta) < f.beta_err;
+    covered_k += std::fabs(f.k - k) < f.k_err;
+    covered_C += std::fabs(f.C - C) < f.C_err;
+    chi2_sum += f.chi2_red;
+  }
+  // 68 % expected; binomial sd over 300 trials is 2.7 %; the model is nonlinear, so allow more
+  for (int covered : {covered_beta, covered_k, covered_C}) {
+    EXPECT_GT(covered, trials * 0.58);
+    EXPECT_LT(covered, trials * 0.78);
+  }
+  EXPECT_NEAR(chi2_sum / trials, 1.0, 0.2);
+}
+
+TEST(BeverlooFit, RecoversFrictionLikeExponent) {
+  const std::vector<double> w = {3, 4, 5, 6, 7, 8, 10};
+  std::vector<double> Q, err;
+  for (double x : w) {
+    Q.push_back(beverloo_model(x, 0.15, 1.6, 1.5));
+    err.push_back(0.01 * Q.back());
+  }
+  const BeverlooFit f = fit_beverloo(w, Q, err);
+  EXPECT_NEAR(f.beta, 1.5, 1e-4);
+  EXPECT_NEAR(f.k, 1.6, 1e-4);
+  EXPECT_NEAR(f.C, 0.15, 1e-5);
+  EXPECT_LT(f.chi2_red, 1e-6);
+}
+
+TEST(BeverlooFit, DegenerateInputGivesAMessage) {
+  EXPECT_THROW(fit_beverloo({4, 5, 6}, {1, 2, 3}, {0.1, 0.1, 0.1}), FitError);          // fewer points than needed
+  EXPECT_THROW(fit_beverloo({4, 5, 6, 7}, {1, 1, 1, 1}, {0.1, 0.1, 0.1, 0.1}), FitError);  // constant Q
+  EXPECT_THROW(fit_beverloo({4, 5, 6, 7}, {0, 0, 0, 0}, {0, 0, 0, 0}), FitError);      // all clogged
+  EXPECT_THROW(fit_beverloo({4, 5, 6, 7}, {1, 2, 3, 4}, {0.1, 0, 0.1, 0.1}), FitError);  // a zero error
+  try {
+    fit_beverloo({4, 5}, {1, 2}, {0.1, 0.1});
+  } catch (const FitError& e) {
+    EXPECT_NE(std::string(e.what()).find("need at least 4"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CrossoverFit, RecoversLambdaCAndWidthWithCalibratedErrors) {
+  const double lambda_c = 0.05, b = 0.8;
+  std::vector<double> lambda;
+  for (int e = -30; e <= 20; e += 5) lambda.push_back(std::pow(10.0, e / 10.0));
+  int covered_lc = 0, covered_b = 0;
+  const int trials = 300;
+  for (int t = 0; t < trials; ++t) {
+    Rng rng(5000 + t);
+    std::vector<double> beta, err;
+    for (double l : lambda) {
+      err.push_back(0.04);
+      beta.push_back(crossover_model(2, l, lambda_c, b) + 0.04 * gaussian(rng));
+    }
+    const CrossoverFit f = fit_crossover(2, lambda, beta, err);
+    covered_lc += std::fabs(f.log10_lambda_c - std::log10(lambda_c)) < f.log10_lambda_c_err;
+    covered_b += std::fabs(f.b - b) < f.b_err;
+  }
+  EXPECT_GT(covered_lc, trials * 0.58);
+  EXPECT_LT(covered_lc, trials * 0.78);
+  EXPECT_GT(covered_b, trials * 0.58);
+  EXPECT_LT(covered_b, trials * 0.78);
+}
+
+TEST(CrossoverFit, ThreeDimensionalLimitsAndDegenerateInput) {
+  // d = 3: 5/2 for lambda << lambda_c, 3/2 for lambda >> lambda_c, midpoint 2
+  EXPECT_NEAR(crossover_model(3, 1e-9, 0.07, 0.5), 2.5, 1e-9);
+  EXPECT_NEAR(crossover_model(3, 1e9, 0.07, 0.5), 1.5, 1e-9);
+  EXPECT_DOUBLE_EQ(crossover_model(3, 0.07, 0.07, 0.5), 2.0);
+  EXPECT_THROW(fit_crossover(2, {0.1}, {1.0}, {0.1}), FitError);                        // one lambda
+  EXPECT_THROW(fit_crossover(2, {0, 0.1, 1}, {1.5, 1.0, 0.5}, {0.1, 0.1, 0.1}), FitError);  // lambda = 0 is a limit
+}
+
+}  // namespace
+}  // namespace beverloo

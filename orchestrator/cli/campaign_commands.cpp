@@ -168,7 +168,10 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
       CampaignOptions o = *opts;
       if (o.dir.empty() || o.dir == "campaign") o.dir = (fs::path("campaigns") / fs::path(*sweep_path).stem()).string();
       o.progress = to_mode(*progress);
-      return run_campaign(*sweep_path, o);
+      const int rc = run_campaign(*sweep_path, o);
+      if (rc != exit_code::kOk && rc != exit_code::kJobsFailed) return rc;
+      const int report = report_campaign(o.dir, (fs::path(o.dir) / "report").string());
+      return rc != exit_code::kOk ? rc : report;
     });
   });
 

@@ -1,0 +1,245 @@
+#include "campaign_fits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "engine/io/h5.h"
+#include "orchestrator/sweep/sweep.h"
+
+namespace beverloo {
+namespace {
+using nlohmann::json;
+
+std::string fmt(double v, int digits = 4) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  if (std::isnan(v)) return "";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+}  // namespace
+
+std::string format_lambda(double lambda) { return std::isinf(lambda) ? "inf" : fmt(lambda); }
+
+int Series::clogged_points() const {
+  int n = 0;
+  for (const auto& p : points) n += !p.flowing() && p.clogged > 0;
+  return n;
+}
+
+CampaignFits fit_campaign(db::Database& db) {
+  CampaignFits out;
+  db::Statement st = db.prepare(
+      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged FROM jobs j "
+      "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
+      "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
+  std::map<std::string, std::size_t> index;
+  std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool>>>> raw;
+  while (st.step()) {
+    json job = json::parse(st.get_text(1));
+    const double w = job["w"].get<double>();
+    json series_job = job;
+    for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
+    const std::string key = sha256_hex(series_job.dump());
+    if (!index.count(key)) {
+      Series s;
+      s.key = key;
+      s.dimension = job["dimension"];
+      s.N = job["N"];
+      s.E_sp = job["E_sp"];
+      s.zeta = job["zeta"];
+      s.mu = job["mu"];
+      s.lambda = s.mu > 0 ? s.zeta / s.mu : (s.zeta > 0 ? INFINITY : NAN);
+      s.theta_left = job["theta_w_left_deg"];
+      s.theta_right = job["theta_w_right_deg"];
+      json base = series_job;
+      base.erase("zeta");
+      base.erase("mu");
+      s.base_key = sha256_hex(base.dump());
+      std::ostringstream label;
+      label << s.dimension << "D SP E_sp=" << fmt(s.E_sp) << " lambda=" << format_lambda(s.lambda) << " (zeta="
+            << fmt(s.zeta, 3) << ", mu=" << fmt(s.mu, 3) << ")";
+      if (s.theta_left != 90 || s.theta_right != 90) label << " theta=" << fmt(s.theta_left) << "/" << fmt(s.theta_right);
+      label << " N=" << s.N;
+      s.label = label.str();
+      index[key] = out.series.size();
+      out.series.push_back(s);
+    }
+    out.series[index[key]].job_keys.push_back(st.get_text(0));
+    raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0);
+  }
+  for (Series& s : out.series) {
+    for (const auto& [w, reps] : raw[s.key]) {
+      SeriesPoint p;
+      p.w = w;
+      p.replicas = static_cast<int>(reps.size());
+      double sw = 0, swq = 0;
+      for (const auto& [Q, err, clogged] : reps) {
+        if (clogged) {
+          ++p.clogged;
+          continue;
+        }
+        if (Q > 0 && err > 0) {
+          sw += 1 / (err * err);
+          swq += Q / (err * err);
+        }
+      }
+      if (sw > 0) {
+        p.Q = swq / sw;
+        p.Q_err = 1 / std::sqrt(sw);
+      }
+      s.points.push_back(p);
+    }
+    std::vector<double> w, Q, e;
+    for (const auto& p : s.points)
+      if (p.flowing()) {
+        w.push_back(p.w);
+        Q.push_back(p.Q);
+        e.push_back(p.Q_err);
+      }
+    try {
+      s.fit = fit_beverloo(w, Q, e);
+    } catch (const FitError& err) {
+      s.message = err.what();
+    }
+  }
+  // crossover groups: series sharing everything but zeta/mu, with the same drag for finite lambda
+  std::map<std::string, Crossover> groups;
+  for (const Series& s : out.series) {
+    if (!(s.zeta > 0)) continue;  // lambda = 0 joins below as a limit
+    const std::string gkey = s.base_key + "|zeta=" + fmt(s.zeta, 12);
+    Crossover& g = groups[gkey];
+    g.key = sha256_hex(gkey);
+    g.dimension = s.dimension;
+    g.label = std::to_string(s.dimension) + "D SP E_sp=" + fmt(s.E_sp) + " zeta=" + fmt(s.zeta, 3) + " N=" + std::to_string(s.N);
+    if (std::isinf(s.lambda))
+      g.limit_inf = &s;
+    else if (s.fit)
+      g.finite.push_back(&s);
+  }
+  for (auto& [gkey, g] : groups) {
+    const double scale = std::stod(gkey.substr(gkey.find("|zeta=") + 6)) * std::sqrt(10.0);
+    for (const Series& s : out.series)  // lambda = 0 at the same dissipation scale (mu = 10 sqrt 10 s)
+      if (s.zeta == 0 && s.base_key == gkey.substr(0, gkey.find('|')) &&
+          std::fabs(s.mu / (10 * std::sqrt(10.0)) - scale) <= 1e-9 * scale)
+        g.limit0 = &s;
+    std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
+    std::vector<double> l, b, e;
+    for (const Series* s : g.finite) {
+      l.push_back(s->lambda);
+      b.push_back(s->fit->beta);
+      e.push_back(s->fit->beta_err);
+    }
+    try {
+      g.fit = fit_crossover(g.dimension, l, b, e);
+    } catch (const FitError& err) {
+      g.message = err.what();
+    }
+    out.crossovers.push_back(g);
+  }
+  return out;
+}
+
+void store_fits(db::Database& db, const CampaignFits& fits) {
+  db::Transaction tx(db);
+  db.exec("DELETE FROM series_points; DELETE FROM beverloo_fit_results; DELETE FROM crossover_fit_results;");
+  db::Statement ins = db.prepare(
+      "INSERT INTO beverloo_fit_results (series_key, label, dimension, N, E_sp, zeta, mu, lambda, theta_w_left_deg, "
+      "theta_w_right_deg, points, clogged_points, C, C_err, k, k_err, beta, beta_err, chi2_red, message) VALUES "
+      "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20)");
+  db::Statement pt = db.prepare(
+      "INSERT INTO series_points (series_key, w, Q, Q_err, replicas, clogged) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  for (const Series& s : fits.series) {
+    int flowing = 0;
+    for (const auto& p : s.points) flowing += p.flowing();
+    ins.bind(1, s.key).bind(2, s.label).bind(3, s.dimension).bind(4, s.N).bind(5, s.E_sp).bind(6, s.zeta).bind(7, s.mu);
+    if (std::isnan(s.lambda)) ins.bind_null(8); else ins.bind(8, s.lambda);
+    ins.bind(9, s.theta_left).bind(10, s.theta_right).bind(11, flowing).bind(12, s.clogged_points());
+    if (s.fit) {
+      ins.bind(13, s.fit->C).bind(14, s.fit->C_err).bind(15, s.fit->k).bind(16, s.fit->k_err).bind(17, s.fit->beta)
+          .bind(18, s.fit->beta_err).bind(19, s.fit->chi2_red).bind_null(20);
+    } else {
+      for (int c = 13; c <= 19; ++c) ins.bind_null(c);
+      ins.bind(20, s.message);
+    }
+    ins.run();
+    for (const auto& p : s.points)
+      pt.bind(1, s.key).bind(2, p.w).bind(3, p.Q).bind(4, p.Q_err).bind(5, p.replicas).bind(6, p.clogged).run();
+  }
+  db::Statement cx = db.prepare(
+      "INSERT INTO crossover_fit_results (group_key, label, dimension, points, lambda_c, lambda_c_err, b, b_err, chi2_red, "
+      "beta_lambda0, beta_lambda0_err, beta_inf, beta_inf_err, message) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, "
+      "?11, ?12, ?13, ?14)");
+  for (const Crossover& g : fits.crossovers) {
+    cx.bind(1, g.key).bind(2, g.label).bind(3, g.dimension).bind(4, static_cast<int>(g.finite.size()));
+    if (g.fit)
+      cx.bind(5, g.fit->lambda_c).bind(6, g.fit->lambda_c_err).bind(7, g.fit->b).bind(8, g.fit->b_err).bind(9, g.fit->chi2_red);
+    else
+      for (int c = 5; c <= 9; ++c) cx.bind_null(c);
+    auto limit = [&](int col, const Series* s) {
+      if (s && s->fit) cx.bind(col, s->fit->beta).bind(col + 1, s->fit->beta_err);
+      else cx.bind_null(col).bind_null(col + 1);
+    };
+    limit(10, g.limit0);
+    limit(12, g.limit_inf);
+    if (g.fit) cx.bind_null(14); else cx.bind(14, g.message);
+    cx.run();
+  }
+  tx.commit();
+}
+
+void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  std::ostringstream csv, md, xcsv, xmd;
+  csv << "label,dimension,N,E_sp,zeta,mu,lambda,points,clogged_points,C,C_err,k,k_err,beta,beta_err,chi2_red,message\n";
+  md << "| series | points | clogged | C | k | beta | chi2_red |\n|---|---|---|---|---|---|---|\n";
+  for (const Series& s : fits.series) {
+    int flowing = 0;
+    for (const auto& p : s.points) flowing += p.flowing();
+    csv << '"' << s.label << "\"," << s.dimension << ',' << s.N << ',' << fmt(s.E_sp, 10) << ',' << fmt(s.zeta, 10) << ','
+        << fmt(s.mu, 10) << ',' << format_lambda(s.lambda) << ',' << flowing << ',' << s.clogged_points() << ',';
+    if (s.fit)
+      csv << fmt(s.fit->C, 8) << ',' << fmt(s.fit->C_err, 4) << ',' << fmt(s.fit->k, 8) << ',' << fmt(s.fit->k_err, 4) << ','
+          << fmt(s.fit->beta, 8) << ',' << fmt(s.fit->beta_err, 4) << ',' << fmt(s.fit->chi2_red, 4) << ",\n";
+    else
+      csv << ",,,,,,,\"" << s.message << "\"\n";
+    md << "| " << s.label << " | " << flowing << " | " << s.clogged_points() << " | ";
+    if (s.fit)
+      md << fmt(s.fit->C) << " ± " << fmt(s.fit->C_err, 2) << " | " << fmt(s.fit->k) << " ± " << fmt(s.fit->k_err, 2) << " | "
+         << fmt(s.fit->beta) << " ± " << fmt(s.fit->beta_err, 2) << " | " << fmt(s.fit->chi2_red, 3) << " |\n";
+    else
+      md << "no fit: " << s.message << " | | | |\n";
+  }
+  xcsv << "label,dimension,points,lambda_c,lambda_c_err,b,b_err,chi2_red,beta_lambda0,beta_inf,message\n";
+  xmd << "| group | points | lambda_c | b | chi2_red | beta(lambda=0) | beta(lambda=inf) |\n|---|---|---|---|---|---|---|\n";
+  for (const Crossover& g : fits.crossovers) {
+    const std::string b0 = g.limit0 && g.limit0->fit ? fmt(g.limit0->fit->beta) : "";
+    const std::string binf = g.limit_inf && g.limit_inf->fit ? fmt(g.limit_inf->fit->beta) : "";
+    xcsv << '"' << g.label << "\"," << g.dimension << ',' << g.finite.size() << ',';
+    if (g.fit)
+      xcsv << fmt(g.fit->lambda_c, 8) << ',' << fmt(g.fit->lambda_c_err, 4) << ',' << fmt(g.fit->b, 8) << ','
+           << fmt(g.fit->b_err, 4) << ',' << fmt(g.fit->chi2_red, 4);
+    else
+      xcsv << ",,,,";
+    xcsv << ',' << b0 << ',' << binf << ",\"" << g.message << "\"\n";
+    xmd << "| " << g.label << " | " << g.finite.size() << " | ";
+    if (g.fit)
+      xmd << fmt(g.fit->lambda_c) << " ± " << fmt(g.fit->lambda_c_err, 2) << " | " << fmt(g.fit->b) << " ± "
+          << fmt(g.fit->b_err, 2) << " | " << fmt(g.fit->chi2_red, 3);
+    else
+      xmd << "no fit: " << g.message << " | | ";
+    xmd << " | " << b0 << " | " << binf << " |\n";
+  }
+  const std::filesystem::path d(dir);
+  write_text_atomically((d / "beverloo_fits.csv").string(), csv.str());
+  write_text_atomically((d / "beverloo_fits.md").string(), md.str());
+  write_text_atomically((d / "crossover_fits.csv").string(), xcsv.str());
+  write_text_atomically((d / "crossover_fits.md").string(), xmd.str());
+}
+
+}  // namespace beverloo

@@ -1,0 +1,59 @@
+#pragma once
+/// \file campaign_fits.h
+/// \brief From a campaign's results to its fits: series (every parameter but w equal, replicas
+/// pooled by inverse-variance weighting, clogged points left out of the fit but reported), one
+/// Beverloo fit per series, and one crossover fit per group of series that differ only in
+/// lambda = zeta/mu (same other parameters and the same drag scale for finite lambda).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "orchestrator/db/database.h"
+#include "reports/fit.h"
+
+namespace beverloo {
+
+struct SeriesPoint {
+  double w = 0, Q = 0, Q_err = 0;
+  int replicas = 0, clogged = 0;
+  bool flowing() const { return Q > 0 && Q_err > 0; }
+};
+
+struct Series {
+  std::string key, label, base_key;  ///< base_key: without zeta and mu (finds the lambda limits)
+  int dimension = 2, N = 0;
+  double E_sp = 0, zeta = 0, mu = 0, lambda = 0, theta_left = 90, theta_right = 90;
+  std::vector<SeriesPoint> points;  ///< sorted by w
+  std::vector<std::string> job_keys;
+  std::optional<BeverlooFit> fit;
+  std::string message;  ///< why there is no fit
+  int clogged_points() const;
+};
+
+struct Crossover {
+  std::string key, label;
+  int dimension = 2;
+  std::vector<const Series*> finite;  ///< the finite lambda > 0 series with a fit, by lambda
+  const Series* limit0 = nullptr;     ///< lambda = 0 (friction only)
+  const Series* limit_inf = nullptr;  ///< lambda = inf (drag only)
+  std::optional<CrossoverFit> fit;
+  std::string message;
+};
+
+struct CampaignFits {
+  std::vector<Series> series;
+  std::vector<Crossover> crossovers;
+};
+
+/// Reads the latest campaign of the database and fits it. Never throws for unfittable data.
+CampaignFits fit_campaign(db::Database& db);
+/// Replaces the fit tables in one transaction.
+void store_fits(db::Database& db, const CampaignFits& fits);
+/// beverloo_fits.{csv,md} and crossover_fits.{csv,md} in dir.
+void write_fit_tables(const CampaignFits& fits, const std::string& dir);
+/// The Markdown table of the series fits (also used by the HTML report).
+std::string format_lambda(double lambda);
+
+}  // namespace beverloo

@@ -1,0 +1,114 @@
+// The report from a fixture campaign database: every figure exists as valid SVG and PNG, with
+// its data and script; index.html references each; the fits recover the fixture's parameters.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "orchestrator/campaign/store.h"
+#include "orchestrator/db/migrations.h"
+#include "reports/fit.h"
+#include "reports/report.h"
+
+namespace beverloo {
+namespace {
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// A campaign over lambda (with both limits), E_sp and w whose results follow
+/// Q = C (w - k)^beta(lambda) exactly (2 % errors), beta on the crossover sigmoid.
+fs::path make_fixture(const double lambda_c, const double b) {
+  const fs::path dir = fs::temp_directory_path() / ("beverloo-report-" + new_token());
+  fs::create_directories(dir / "jobs");
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
+  db::open_store(db);
+  CampaignStore store(db);
+  const json sweep = {{"name", "fixture"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"union", {{{"product", {{{"E_sp", {100, 1000}}}, {{"lambda", {0, "inf"}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
+                                            {{"product", {{{"E_sp", 100}}, {{"lambda", {{"logspace", {-3, 1, 9}}}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
+                                            {{"E_sp", 50}, {"lambda", 0.5}, {"w", {4, 5, 6}}}}}}}};
+  const Sweep s = Sweep::parse(sweep, "fixture");
+  const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
+  while (auto job = store.claim_next(id, "local", "test")) {
+    const json j = json::parse(job->job_json);
+    const double zeta = j["zeta"], mu = j["mu"], w = j["w"], E = j["E_sp"];
+    const double lambda = mu > 0 ? zeta / mu : INFINITY;
+    const double beta = std::isinf(lambda) ? 0.5 : (lambda == 0 ? 1.5 : crossover_model(2, lambda, lambda_c, b));
+    const double k = E > 500 ? 2.0 : 1.0, C = 0.4;
+    const double Q = beverloo_model(w, C, k, beta);
+    const json summary = {{"status", "converged"}, {"Q", Q}, {"Q_err", 0.02 * Q}, {"Q_rel_err", 0.02},
+                          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
+                          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
+                          {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
+                          {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
+                          {"particle_steps_per_second", 3e7}};
+    std::vector<double> h, v, e;
+    for (int i = 0; i < 20; ++i) {
+      h.push_back(0.5 * i);
+      v.push_back(w * std::exp(-0.3 * i));
+      e.push_back(0.01);
+    }
+    store.ingest_success(*job, summary.dump(), h, v, e);
+  }
+  return dir;
+}
+
+TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
+  const fs::path dir = make_fixture(0.05, 0.8);
+  const fs::path out = dir / "report";
+  const auto figures = write_report(dir.string(), out.string());
+  const std::string index = read(out / "index.html");
+  int made = 0;
+  for (const auto& f : figures) {
+    if (!f.made) {
+      EXPECT_EQ(f.name, "k_heatmap_Kl_Kb") << f.name << " not made: " << f.why_not;
+      EXPECT_NE(index.find(f.why_not), std::string::npos) << "index.html must say why " << f.name << " is missing";
+      continue;
+    }
+    ++made;
+    const std::string svg = read(out / (f.name + ".svg"));
+    EXPECT_NE(svg.find("<svg"), std::string::npos) << f.name;
+    EXPECT_NE(svg.find("</svg>"), std::string::npos) << f.name;
+    const std::string png = read(out / (f.name + ".png"));
+    ASSERT_GT(png.size(), 1000u) << f.name;
+    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << f.name;
+    EXPECT_TRUE(fs::exists(out / (f.name + ".dat"))) << f.name;
+    EXPECT_TRUE(fs::exists(out / (f.name + ".gp"))) << f.name;
+    EXPECT_NE(index.find(f.name + ".svg"), std::string::npos) << f.name;
+    EXPECT_NE(index.find(f.name + ".png"), std::string::npos) << f.name;
+  }
+  EXPECT_EQ(made, 5);  // Q(w), collapse, beta(lambda), k(E_sp), profiles
+  // the fits, through the SQL views
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
+  db::Statement st = db.prepare("SELECT beta, k, C FROM beverloo_fits WHERE E_sp = 1000 AND mu = 0");
+  ASSERT_TRUE(st.step());
+  EXPECT_NEAR(st.get_double(0), 0.5, 1e-4);
+  EXPECT_NEAR(st.get_double(1), 2.0, 1e-3);
+  EXPECT_NEAR(st.get_double(2), 0.4, 1e-4);
+  db::Statement short_series = db.prepare("SELECT message FROM beverloo_fits WHERE E_sp = 50");
+  ASSERT_TRUE(short_series.step());
+  EXPECT_NE(short_series.get_text(0).find("need at least 4"), std::string::npos);
+  db::Statement x = db.prepare("SELECT lambda_c, b, beta_lambda0, beta_inf, points FROM crossover_fits WHERE lambda_c IS NOT NULL");
+  ASSERT_TRUE(x.step());
+  EXPECT_NEAR(x.get_double(0), 0.05, 1e-3);
+  EXPECT_NEAR(x.get_double(1), 0.8, 1e-2);
+  EXPECT_NEAR(x.get_double(2), 1.5, 1e-3);
+  EXPECT_NEAR(x.get_double(3), 0.5, 1e-3);
+  EXPECT_EQ(x.get_int(4), 9);
+  EXPECT_TRUE(fs::exists(out / "beverloo_fits.csv"));
+  EXPECT_TRUE(fs::exists(out / "crossover_fits.md"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace beverloo

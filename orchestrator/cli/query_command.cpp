@@ -61,6 +61,8 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
     db::check_store(db);
     db.exec("PRAGMA query_only = 1");
     sqlite3_set_authorizer(db.handle(), authorize, nullptr);
+    // Prepare every statement first: one refused statement means nothing runs at all.
+    std::vector<db::Statement> statements;
     const char* tail = sql.c_str();
     const char* end = tail + sql.size();
     while (tail < end) {
@@ -71,11 +73,13 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
         return exit_code::kConfig;
       }
       if (!raw) continue;  // whitespace or a comment
-      db::Statement st(db, raw);
-      if (!st.readonly()) {
+      statements.emplace_back(db, raw);
+      if (!statements.back().readonly()) {
         std::fprintf(stderr, "beverloo query: refused: only read-only statements are allowed\n");
         return exit_code::kConfig;
       }
+    }
+    for (db::Statement& st : statements) {
       const int n = st.columns();
       std::vector<std::vector<std::string>> rows;
       std::vector<std::vector<int>> types;

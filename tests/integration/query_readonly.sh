@@ -13,8 +13,9 @@ for sql in "INSERT INTO campaigns (name, sweep_json, sweep_sha256) VALUES ('x', 
            "UPDATE jobs SET state = 'done'" "DELETE FROM jobs" "DROP TABLE results" "CREATE TABLE t (x)" \
            "ATTACH DATABASE '$WORK/other.sqlite' AS o" "PRAGMA user_version = 7" "PRAGMA journal_mode = DELETE" \
            "SELECT 1; DELETE FROM jobs" "VACUUM" "CREATE TEMP TABLE t (x)"; do
-  set +e; "$BIN" query "$WORK/c" "$sql" > /dev/null 2> "$WORK/err"; rc=$?; set -e
+  set +e; "$BIN" query "$WORK/c" "$sql" > "$WORK/out" 2> "$WORK/err"; rc=$?; set -e
   [ "$rc" -ne 0 ] || fail "query accepted: $sql"
+  [ ! -s "$WORK/out" ] || fail "query printed results before refusing: $sql"
   echo "ok  refused ($rc): $sql -- $(head -c 100 "$WORK/err")"
 done
 [ ! -e "$WORK/other.sqlite" ] || fail "ATTACH created a file"

@@ -35,6 +35,8 @@ TEST(BeverlooFit, RecoversParametersWithCalibratedErrors) {
     covered_C += std::fabs(f.C - C) < f.C_err;
     chi2_sum += f.chi2_red;
   }
+  std::printf("Beverloo fit one-sigma coverage over %d trials: beta %.1f%%, k %.1f%%, C %.1f%%; mean chi2_red %.3f\n", trials,
+              100.0 * covered_beta / trials, 100.0 * covered_k / trials, 100.0 * covered_C / trials, chi2_sum / trials);
   // 68 % expected; binomial sd over 300 trials is 2.7 %; the model is nonlinear, so allow more
   for (int covered : {covered_beta, covered_k, covered_C}) {
     EXPECT_GT(covered, trials * 0.58);
@@ -86,6 +88,8 @@ TEST(CrossoverFit, RecoversLambdaCAndWidthWithCalibratedErrors) {
     covered_lc += std::fabs(f.log10_lambda_c - std::log10(lambda_c)) < f.log10_lambda_c_err;
     covered_b += std::fabs(f.b - b) < f.b_err;
   }
+  std::printf("crossover fit one-sigma coverage over %d trials: log10 lambda_c %.1f%%, b %.1f%%\n", trials,
+              100.0 * covered_lc / trials, 100.0 * covered_b / trials);
   EXPECT_GT(covered_lc, trials * 0.58);
   EXPECT_LT(covered_lc, trials * 0.78);
   EXPECT_GT(covered_b, trials * 0.58);

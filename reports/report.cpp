@@ -33,6 +33,8 @@ std::string html_escape(const std::string& s) {
 
 /// A figure: data blocks (gnuplot "index"), a plot script body; rendered to SVG and PNG.
 struct Figure {
+  Figure(std::string n, std::string t, std::string x, std::string y, std::string e = "")
+      : name(std::move(n)), title(std::move(t)), xlabel(std::move(x)), ylabel(std::move(y)), extra(std::move(e)) {}
   std::string name, title, xlabel, ylabel, extra;  ///< extra: more "set" lines (log scales, ...)
   std::ostringstream data;
   std::vector<std::string> plots;  ///< plot clauses; "DATA" stands for the data file
@@ -66,6 +68,18 @@ void render(Figure& f, const fs::path& dir) {
   fs::remove(dir / (f.name + ".log"));
 }
 
+/// Renders the figure if it has data; otherwise records what data it needs.
+ReportFigure finish(Figure& f, int blocks, const fs::path& dir, const std::string& needs) {
+  ReportFigure r{f.name, f.title};
+  if (blocks == 0) {
+    r.why_not = needs;
+  } else {
+    render(f, dir);
+    r.made = true;
+  }
+  return r;
+}
+
 }  // namespace
 
 std::vector<ReportFigure> write_report(const std::string& campaign_dir, const std::string& out_dir) {
@@ -81,11 +95,9 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
 
   // 1. Q versus w with the fitted curves
   {
-    Figure f;
-    f.name = "Q_vs_w";
-    f.title = "Flow rate Q versus orifice width w, with fits Q = C (w - k)^beta";
-    f.xlabel = "w / sigma_avg";
-    f.ylabel = "Q / Q_0";
+    Figure f("Q_vs_w",
+             "Flow rate Q versus orifice width w, with fits Q = C (w - k)^beta",
+             "w / sigma_avg", "Q / Q_0");
     int block = 0;
     for (const Series& s : fits.series) {
       f.begin_block(s.label + ": w Q Q_err (flowing points)");
@@ -106,18 +118,13 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
         ++block;
       }
     }
-    ReportFigure r{f.name, f.title};
-    if (block == 0) r.why_not = "no finished jobs";
-    else { render(f, dir); r.made = true; }
-    made.push_back(r);
+    made.push_back(finish(f, block, dir, "no finished jobs"));
   }
   // 2. collapse: log10(Q/C) versus log10(w - k), with reference slopes
   {
-    Figure f;
-    f.name = "loglog_collapse";
-    f.title = "log10(Q/C) versus log10(w - k), reference slopes 1/2, 3/2, 5/2";
-    f.xlabel = "log10(w/sigma_avg - k)";
-    f.ylabel = "log10(Q/C)";
+    Figure f("loglog_collapse",
+             "log10(Q/C) versus log10(w - k), reference slopes 1/2, 3/2, 5/2",
+             "log10(w/sigma_avg - k)", "log10(Q/C)");
     int block = 0;
     for (const Series& s : fits.series) {
       if (!s.fit) continue;
@@ -130,19 +137,13 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
     f.plots.push_back("0.5*x with lines dt 2 lc rgb 'gray40' title 'slope 1/2'");
     f.plots.push_back("1.5*x with lines dt 3 lc rgb 'gray40' title 'slope 3/2'");
     f.plots.push_back("2.5*x with lines dt 4 lc rgb 'gray40' title 'slope 5/2'");
-    ReportFigure r{f.name, f.title};
-    if (block == 0) r.why_not = "no series could be fitted (at least 4 flowing w per series)";
-    else { render(f, dir); r.made = true; }
-    made.push_back(r);
+    made.push_back(finish(f, block, dir, "no series could be fitted (at least 4 flowing w per series)"));
   }
   // 3. beta versus lambda with the sigmoid
   {
-    Figure f;
-    f.name = "beta_vs_lambda";
-    f.title = "Exponent beta versus lambda = zeta/mu, with beta = d - 1 - tanh[log10(lambda/lambda_c)/b]/2";
-    f.xlabel = "lambda";
-    f.ylabel = "beta";
-    f.extra = "set logscale x\nset format x '10^{%L}'\n";
+    Figure f("beta_vs_lambda",
+             "Exponent beta versus lambda = zeta/mu, with beta = d - 1 - tanh[log10(lambda/lambda_c)/b]/2",
+             "lambda", "beta", "set logscale x\nset format x '10^{%L}'\n");
     int block = 0;
     for (const Crossover& g : fits.crossovers) {
       if (g.finite.empty()) continue;
@@ -163,19 +164,13 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
         if (lim && lim->fit)
           f.plots.push_back(num(lim->fit->beta) + " with lines dt 2 title \"" + g.label + ", " + name + "\"");
     }
-    ReportFigure r{f.name, f.title};
-    if (block == 0) r.why_not = "needs series at several finite lambda > 0 (a lambda sweep)";
-    else { render(f, dir); r.made = true; }
-    made.push_back(r);
+    made.push_back(finish(f, block, dir, "needs series at several finite lambda > 0 (a lambda sweep)"));
   }
   // 4. k versus E_sp, per dissipation setting
   {
-    Figure f;
-    f.name = "k_vs_Esp";
-    f.title = "Offset k versus stiffness E_sp";
-    f.xlabel = "E_sp";
-    f.ylabel = "k";
-    f.extra = "set logscale x\n";
+    Figure f("k_vs_Esp",
+             "Offset k versus stiffness E_sp",
+             "E_sp", "k", "set logscale x\n");
     std::map<std::string, std::vector<const Series*>> by;
     for (const Series& s : fits.series)
       if (s.fit) by[std::to_string(s.dimension) + "D lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N)].push_back(&s);
@@ -189,21 +184,16 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
       for (const Series* s : list) f.data << num(s->E_sp) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
       f.plots.push_back("DATA index " + std::to_string(block++) + " using 1:2:3 with yerrorlines pt 7 title \"" + label + "\"");
     }
-    ReportFigure r{f.name, f.title};
-    if (block == 0) r.why_not = "needs fitted series at two or more E_sp with the other parameters equal";
-    else { render(f, dir); r.made = true; }
-    made.push_back(r);
+    made.push_back(finish(f, block, dir, "needs fitted series at two or more E_sp with the other parameters equal"));
   }
   // 5. k heat map over (K_l, K_b): a DP observable
   made.push_back({"k_heatmap_Kl_Kb", "Offset k over (K_l, K_b)", false,
                   "needs deformable-particle (DP) results; this engine has the SP model only so far"});
   // 6. velocity profiles for several w
   {
-    Figure f;
-    f.name = "velocity_profiles";
-    f.title = "Coarse-grained velocity along gravity v_g(h) on the centre line";
-    f.xlabel = "h / sigma_avg";
-    f.ylabel = "v_g";
+    Figure f("velocity_profiles",
+             "Coarse-grained velocity along gravity v_g(h) on the centre line",
+             "h / sigma_avg", "v_g");
     int block = 0;
     int shown = 0;
     for (const Series& s : fits.series) {
@@ -229,10 +219,7 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
                           num(w) + "\"");
       }
     }
-    ReportFigure r{f.name, f.title};
-    if (block == 0) r.why_not = "no velocity profiles in the database";
-    else { render(f, dir); r.made = true; }
-    made.push_back(r);
+    made.push_back(finish(f, block, dir, "no velocity profiles in the database"));
   }
 
   // index.html

@@ -14,7 +14,7 @@ PACKAGES=(
   libgtest-dev googletest                 # tests
   libmuparser-dev                         # derived parameters and filters in sweep files
   libssl-dev                              # SHA-256 job keys (OpenSSL libcrypto)
-  bc                                      # tests: timing arithmetic
+  bc procps                               # tests: timing arithmetic, pgrep/pkill
   gnuplot-nox                             # figures
   python3-h5py python3-numpy              # tests read result files the way users do (h5py)
 )

@@ -250,7 +250,8 @@ class Coordinator {
     if (o_.progress == ProgressMode::Quiet) return;
     const auto now = Clock::now();
     const bool terminal = o_.progress == ProgressMode::Terminal;
-    if (!final_line && now - last_progress_ < std::chrono::milliseconds(terminal ? 250 : 10000)) return;
+    // log mode: every finished job has its own line; the summary comes once a minute
+    if (!final_line && now - last_progress_ < std::chrono::milliseconds(terminal ? 250 : 60000)) return;
     last_progress_ = now;
     const double minutes = std::chrono::duration<double>(now - start).count() / 60;
     const double finished_now = c.finished() - initial_.finished();

@@ -96,7 +96,7 @@ class Coordinator {
   int run(const std::atomic<bool>* stop) {
     reconcile();
     const auto start = Clock::now();
-    auto last_adopt_check = start;
+    auto last_adopt_check = start, last_heartbeat = start;
     initial_ = store_.counts(campaign_);
     while (true) {
       if (stop->load()) return shutdown();
@@ -112,6 +112,10 @@ class Coordinator {
         check_adopted();
         check_timeouts();
         last_adopt_check = Clock::now();
+      }
+      if (Clock::now() - last_heartbeat > std::chrono::seconds(30)) {
+        record_heartbeats();
+        last_heartbeat = Clock::now();
       }
       const StateCounts c = store_.counts(campaign_);
       progress(c, start, false);
@@ -223,6 +227,14 @@ class Coordinator {
       it = adopted_.erase(it);
       settle(job, nullptr);
     }
+  }
+
+  /// attempts.heartbeat_at: when each worker was last seen alive (holding its job's lock).
+  void record_heartbeats() {
+    for (const auto& [id, l] : live_)
+      if (job_files::lock_is_held(job_dir(l.job.dir))) store_.heartbeat(id);
+    for (const auto& [id, job] : adopted_)
+      if (job_files::lock_is_held(job_dir(job.dir))) store_.heartbeat(id);
   }
 
   void check_timeouts() {

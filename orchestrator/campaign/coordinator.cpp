@@ -113,7 +113,7 @@ class Coordinator {
         check_timeouts();
         last_adopt_check = Clock::now();
       }
-      if (Clock::now() - last_heartbeat > std::chrono::seconds(30)) {
+      if (std::chrono::duration<double>(Clock::now() - last_heartbeat).count() > o_.heartbeat_s) {
         record_heartbeats();
         last_heartbeat = Clock::now();
       }

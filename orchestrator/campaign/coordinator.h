@@ -17,6 +17,7 @@ struct CampaignOptions {
   int max_retries = 2;       ///< science retries per job (blow-up, I/O); infrastructure ones are free
   int max_infra_retries = 50;  ///< guard against endless kill loops
   double job_timeout_s = 0;  ///< wall seconds per attempt (0: none); then SIGTERM, checkpoint, resume later
+  double heartbeat_s = 30;   ///< how often attempts.heartbeat_at is refreshed for live workers
   ProgressMode progress = ProgressMode::Auto;
 };
 

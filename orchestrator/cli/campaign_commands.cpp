@@ -157,6 +157,8 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
     cmd->add_option("--workers", opts->workers, "worker processes (default: the number of cores)")->check(CLI::Range(1, 4096));
     cmd->add_option("--max-retries", opts->max_retries, "retries per job for blow-ups and I/O errors")->check(CLI::Range(0, 100));
     cmd->add_option("--job-timeout", opts->job_timeout_s, "wall seconds per attempt; then checkpoint and resume later");
+    cmd->add_option("--heartbeat", opts->heartbeat_s, "seconds between heartbeat records of live workers (default 30)")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--progress", *progress, "auto | terminal | log | quiet")->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));
   };
 

@@ -8,7 +8,7 @@ cat > "$WORK/sweep.json" <<'J'
  "run": {"t_max": 200, "target_rel_err": 1e-6, "min_window": 20, "checkpoint_interval": 2},
  "sweep": {"product": [{"lambda": [0.1, "inf"]}, {"w": [3, 4]}]}}
 J
-"$BIN" run "$WORK/sweep.json" --dir "$WORK/c" --workers 2 --progress log 2> "$WORK/log" &
+"$BIN" run "$WORK/sweep.json" --dir "$WORK/c" --workers 2 --heartbeat 0.2 --progress log 2> "$WORK/log" &
 coord=$!
 sleep 1.2
 kill -TERM "$coord"
@@ -21,6 +21,8 @@ q() { sqlite3 "$WORK/c/campaign.sqlite" "$1"; }
 interrupted=$(q "SELECT count(*) FROM attempts WHERE failure_class = 'interrupted'")
 [ "$interrupted" -ge 1 ] || fail "no attempt recorded as interrupted"
 [ "$(q "SELECT max(retries_used) FROM jobs")" -eq 0 ] || fail "an interruption used up the retry budget"
+[ "$(q "SELECT count(*) FROM attempts WHERE failure_class = 'interrupted' AND heartbeat_at IS NOT NULL")" -ge 1 ] \
+  || fail "no heartbeat recorded for workers that ran for a second"
 ls "$WORK"/c/jobs/*/checkpoint.h5 > /dev/null 2>&1 || fail "no checkpoints after SIGTERM"
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/c" --workers 2 --progress quiet
 [ "$(q "SELECT count(*) FROM results")" -eq 4 ] || fail "not every job has a result"

@@ -70,7 +70,7 @@ void render(Figure& f, const fs::path& dir) {
 
 /// Renders the figure if it has data; otherwise records what data it needs.
 ReportFigure finish(Figure& f, int blocks, const fs::path& dir, const std::string& needs) {
-  ReportFigure r{f.name, f.title};
+  ReportFigure r{f.name, f.title, false, ""};
   if (blocks == 0) {
     r.why_not = needs;
   } else {

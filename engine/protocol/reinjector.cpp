@@ -57,7 +57,9 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
   // Fallback (no pile yet, e.g. while the initial column falls, or no free spot): a random
   // lateral position, just above the highest pile particle in that vertical column (or the
   // floor), moving like it, lifted until it overlaps nothing. Particles in the air are never
-  // the base of a placement, so successive placements cannot stack into a tower.
+  // the base of a placement, so successive placements cannot stack into a tower. The lift has
+  // no cap: above every particle the spot is free, so the loop ends (a cap of 64 half
+  // diameters hung forever under a tall falling column of hard particles).
   const double ri = 0.5 * s.sigma(i);
   const double half = hopper_.half_width() - ri;
   for (;;) {
@@ -77,7 +79,7 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
         below = k;
       }
     }
-    for (int lift = 0; lift < 64; ++lift) {
+    for (int lift = 0;; ++lift) {
       p[kUp<D>] = column_top + lift * ri;
       if (is_free(s, i, p, below)) {
         s.x[i] = p;

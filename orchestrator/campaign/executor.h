@@ -37,6 +37,7 @@ class Executor {
 /// child takes the job's flock before exec, so the lock exists exactly as long as the worker.
 class LocalExecutor final : public Executor {
  public:
+  static constexpr int kStopGraceSeconds = 30;  ///< SIGTERM, then SIGKILL after this
   explicit LocalExecutor(int workers) : capacity_(workers) {}
   std::string name() const override { return "local"; }
   int capacity() const override { return capacity_; }

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -68,8 +69,16 @@ void LocalExecutor::stop(std::int64_t attempt_id) {
 std::vector<WorkerExit> LocalExecutor::stop_all() {
   for (const Child& c : children_) ::kill(static_cast<pid_t>(c.pid), SIGTERM);
   std::vector<WorkerExit> out;
+  // A worker checkpoints at the end of its current step; one that does not stop within the
+  // grace period is stuck, and SIGKILL ends it (its job resumes from the last checkpoint).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kStopGraceSeconds);
+  bool killed = false;
   while (!children_.empty()) {
     for (const WorkerExit& e : reap()) out.push_back(e);
+    if (!killed && std::chrono::steady_clock::now() > deadline) {
+      for (const Child& c : children_) ::kill(static_cast<pid_t>(c.pid), SIGKILL);
+      killed = true;
+    }
     if (!children_.empty()) ::usleep(20000);
   }
   return out;

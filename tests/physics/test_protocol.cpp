@@ -113,6 +113,33 @@ TEST(Reinjection, PlacementTouchesAPileParticleAndOverlapsNothing) {
   EXPECT_GT(touching, 30);
 }
 
+TEST(Reinjection, FallbackTerminatesUnderATallColumnWithoutAPile) {
+  // Regression: hard particles (no contacts) placed in a tall column, no pile yet. The fallback
+  // must find a free spot above the column (it once gave up lifting too early and looped forever).
+  SimConfig c = small_config(2, 600, 3.0, 0.3, 0);
+  c.W = 8;
+  c.E_sp = 1e5;
+  c.initial_packing_fraction = 0.6;  // dense: hardly a free spot inside the column
+  c.resolve_and_validate();
+  const Hopper<2> h = hopper_for<2>(c);
+  ParticleState<2> s;
+  Rng rng(3);
+  place_randomly(s, c, h, rng);
+  ForceField<2> ff(c, h);
+  ff.set_gravity(0);
+  ff.set_dissipation(false);
+  ASSERT_TRUE(fire_minimize(s, ff, c.fire, 5e-4).converged);
+  std::vector<std::uint8_t> no_pile(c.N, 0);
+  Reinjector<2> reinjector(h, c.reinjection, c.N);
+  double top = 0;
+  for (const auto& x : s.x) top = std::max(top, x[1]);
+  s.exited[0] = 1;
+  s.x[0] = Vec<2>(0, -3);
+  EXPECT_FALSE(reinjector.reinject(s, 0, rng, no_pile));  // the fallback
+  EXPECT_TRUE(reinjector.is_free(s, 0, s.x[0], -1));
+  EXPECT_GT(top, 25) << "the test needs a column taller than the old lift cap";
+}
+
 TEST(Flow, FlowingCaseGivesPositiveQWithFiniteError) {
   for (int dim : {2, 3}) {
     SimConfig c = dim == 2 ? flowing_config(2, 6, 0.3, 0) : flowing_config(3, 5, 0, 10);

@@ -67,6 +67,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
   for (int i = 0; i < n; ++i) cell_items_[cursor_[cell_of_[i]]++] = i;
 
   row_start_.resize(n + 1);
+  row_end_.resize(n);
   nbr_.clear();
   wall_mask_.assign(n, 0);
   for (int i = 0; i < n; ++i) {
@@ -94,6 +95,8 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
           }
         }
     std::sort(nbr_.begin() + row_start_[i], nbr_.end());
+    row_end_[i] = static_cast<int>(nbr_.size());
+    nbr_.insert(nbr_.end(), kRowSlack, -1);  // room for relocate()
     // walls within reach of this particle until the next build
     const double reach = 0.5 * s.sp.sigma[si] + skin_;
     std::uint8_t mask = 0;
@@ -102,6 +105,48 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     wall_mask_[i] = mask;
   }
   row_start_[n] = static_cast<int>(nbr_.size());
+}
+
+template <int D>
+void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
+  if (force_) return;  // a rebuild is due anyway
+  const int n = s.size();
+  // out: its own row, and its entries in the rows of lower-numbered particles
+  row_end_[i] = row_start_[i];
+  for (int k = 0; k < i; ++k) {
+    int* begin = nbr_.data() + row_start_[k];
+    int* end = nbr_.data() + row_end_[k];
+    int* at = std::lower_bound(begin, end, i);
+    if (at != end && *at == i) {
+      std::copy(at + 1, end, at);
+      --row_end_[k];
+    }
+  }
+  // in: the same criterion as build(), against the reference positions of the others, so the
+  // list stays valid while every particle stays within skin/2 of its reference
+  x_ref_[i] = s.x[i];
+  const int si = s.species[i];
+  for (int j = 0; j < n; ++j) {
+    if (j == i) continue;
+    const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + skin_;
+    if ((x_ref_[i] - x_ref_[j]).squaredNorm() >= c * c) continue;
+    const int row = std::min(i, j), other = std::max(i, j);
+    if (row_end_[row] == row_start_[row + 1]) {  // no room left: rebuild at the next update
+      force_ = true;
+      return;
+    }
+    int* begin = nbr_.data() + row_start_[row];
+    int* end = nbr_.data() + row_end_[row];
+    int* at = std::lower_bound(begin, end, other);
+    std::copy_backward(at, end, end + 1);
+    *at = other;
+    ++row_end_[row];
+  }
+  const double reach = 0.5 * s.sp.sigma[si] + skin_;
+  std::uint8_t mask = 0;
+  for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
+    if ((x_ref_[i] - hopper.nearest_point(w, x_ref_[i])).squaredNorm() < reach * reach) mask |= std::uint8_t(1u << w);
+  wall_mask_[i] = mask;
 }
 
 template class NeighborList<2>;

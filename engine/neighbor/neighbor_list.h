@@ -29,12 +29,20 @@ class NeighborList {
   void build(const ParticleState<D>& s, const Hopper<D>& hopper);
   /// Forces the next update() to rebuild.
   void invalidate() { force_ = true; }
+  /// Particle i was moved far (reinjection): take it out of the list and put it back at its
+  /// new position, so that one jump does not force a rebuild of everything. Rows stay sorted,
+  /// so force sums are unchanged; a row without room falls back to invalidate().
+  void relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper);
 
   const int* row_begin(int i) const { return nbr_.data() + row_start_[i]; }
-  const int* row_end(int i) const { return nbr_.data() + row_start_[i + 1]; }
+  const int* row_end(int i) const { return nbr_.data() + row_end_[i]; }
   std::uint8_t wall_mask(int i) const { return wall_mask_[i]; }
   std::int64_t builds() const { return builds_; }
-  std::size_t pairs() const { return nbr_.size(); }
+  std::size_t pairs() const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < row_end_.size(); ++i) n += row_end_[i] - row_start_[i];
+    return n;
+  }
   double skin() const { return skin_; }
 
  private:
@@ -44,7 +52,9 @@ class NeighborList {
   bool force_ = true;
   std::int64_t builds_ = 0;
   VecArray<D> x_ref_;
-  std::vector<int> row_start_, nbr_;
+  /// Row i holds nbr_[row_start_[i], row_end_[i]); up to row_start_[i + 1] is room for relocate().
+  std::vector<int> row_start_, row_end_, nbr_;
+  static constexpr int kRowSlack = 4;
   std::vector<std::uint8_t> wall_mask_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing
   std::vector<int> cell_of_, cell_start_, cell_items_, cursor_;

@@ -113,6 +113,7 @@ void HopperRun<D>::step_once() {
       ++rec_.reinjections;
       const bool touched = reinjector_.reinject(st, i, rng_, in_pile_);
       if (!touched) ++rec_.reinjection_fallbacks;
+      ff_->list().relocate(i, st, hopper_);
       in_pile_[i] = touched;  // resting on the pile; a fallback particle is still in the air
     }
   });

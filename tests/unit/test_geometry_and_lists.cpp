@@ -84,6 +84,46 @@ void check_list_against_brute_force(int n, std::uint64_t seed) {
   EXPECT_TRUE(list.update(s, h));
 }
 
+template <int D>
+std::set<std::pair<int, int>> listed_pairs(const NeighborList<D>& list, int n) {
+  std::set<std::pair<int, int>> out;
+  for (int i = 0; i < n; ++i) {
+    int prev = -1;
+    for (const int* p = list.row_begin(i); p != list.row_end(i); ++p) {
+      EXPECT_GT(*p, prev) << "rows must stay sorted";
+      prev = *p;
+      out.insert({i, *p});
+    }
+  }
+  return out;
+}
+
+TEST(NeighborList, RelocateEqualsARebuild) {
+  // Moving particles far (reinjection) and relocating them gives exactly the pairs and wall
+  // masks that a fresh build would, in sorted rows.
+  SimConfig c = small_config(2, 400, 3.0);
+  const Hopper<2> h = hopper_for<2>(c);
+  ParticleState<2> s = random_state<2>(c, h, 4);
+  NeighborList<2> list(c.skin), fresh(c.skin);
+  list.build(s, h);
+  Rng rng(8);
+  int relocated = 0;
+  for (int k = 0; k < 20; ++k) {
+    const int i = static_cast<int>(rng.below(s.size()));
+    s.x[i] = Vec<2>(rng.uniform(-5.5, 5.5), rng.uniform(0.5, 30));  // far from where it was
+    list.relocate(i, s, h);
+    relocated += !list.update(s, h);  // false: no rebuild was needed
+  }
+  fresh.build(s, h);
+  EXPECT_GT(relocated, 10) << "most relocations must fit into the rows' room";
+  if (relocated == 20) {
+    EXPECT_EQ(listed_pairs(list, s.size()), listed_pairs(fresh, s.size()));
+    for (int i = 0; i < s.size(); ++i) EXPECT_EQ(list.wall_mask(i), fresh.wall_mask(i)) << i;
+  } else {
+    EXPECT_EQ(listed_pairs(list, s.size()), listed_pairs(fresh, s.size())) << "after the fallback rebuild";
+  }
+}
+
 TEST(NeighborList, MatchesBruteForce2D) { check_list_against_brute_force<2>(400, 1); }
 TEST(NeighborList, MatchesBruteForce3D) { check_list_against_brute_force<3>(500, 2); }
 

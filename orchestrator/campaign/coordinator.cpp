@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -241,7 +242,7 @@ class Coordinator {
     if (o_.job_timeout_s <= 0) return;
     for (auto& [id, l] : live_)
       if (!timed_out_.count(id) && std::chrono::duration<double>(Clock::now() - l.started).count() > o_.job_timeout_s) {
-        timed_out_.insert({id, true});
+        timed_out_.insert(id);
         ex_.stop(id);
       }
   }
@@ -292,7 +293,7 @@ class Coordinator {
   std::string host_;
   std::map<std::int64_t, Live> live_;
   std::map<std::int64_t, ClaimedJob> adopted_;
-  std::map<std::int64_t, bool> timed_out_;
+  std::set<std::int64_t> timed_out_;  // attempts stopped for exceeding --job-timeout
   std::map<std::string, int> infra_failures_;
   StateCounts initial_;
   Clock::time_point last_progress_{};

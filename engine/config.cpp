@@ -101,8 +101,20 @@ SimConfig SimConfig::from_json(const json& j) {
   }
   r.number("theta_w_left_deg", c.theta_w_left_deg);
   r.number("theta_w_right_deg", c.theta_w_right_deg);
+  if (r.has("E_sp") && (c.model == "dp_smooth" || c.model == "dp_rough"))
+    throw ConfigError("E_sp", "applies to model \"sp\" only; the DP contact stiffness is dp.E_c");
   r.number("E_sp", c.E_sp);
   r.number("E_w", c.E_w);
+  if (const json* d = r.object("dp")) {
+    if (!c.is_dp()) throw ConfigError("dp", "applies to the models \"dp_smooth\" and \"dp_rough\" only, not \"" + c.model + "\"");
+    FieldReader dr(*d, "dp");
+    dr.integer("n_v", c.dp.n_v);
+    dr.number("K_a", c.dp.K_a);
+    dr.number("K_l", c.dp.K_l);
+    dr.number("K_b", c.dp.K_b);
+    dr.number("E_c", c.dp.E_c);
+    dr.reject_unknown();
+  }
   r.number("zeta", c.zeta);
   r.number("mu", c.mu);
   r.number("gravity", c.gravity);
@@ -175,8 +187,18 @@ SimConfig SimConfig::from_json(const json& j) {
 }
 
 void SimConfig::resolve_and_validate() {
-  require(model == "sp", "model", "\"" + model + "\" is not a known model (known: \"sp\")");
+  require(model == "sp" || is_dp(), "model",
+          "\"" + model + "\" is not a known model (known: \"sp\", \"dp_smooth\", \"dp_rough\")");
   require(dimension == 2 || dimension == 3, "dimension", "must be 2 or 3, got " + std::to_string(dimension));
+  if (is_dp()) {
+    require(dimension == 2, "dimension", "the DP models are 2D only (physics.md 4), got " + std::to_string(dimension));
+    require(dp.n_v >= 3 && dp.n_v <= 256, "dp.n_v", "must be in [3, 256], got " + std::to_string(dp.n_v));
+    require(dp.K_a > 0, "dp.K_a", "must be > 0, got " + num(dp.K_a));
+    require(dp.K_l > 0, "dp.K_l", "must be > 0, got " + num(dp.K_l));
+    require(dp.K_b >= 0, "dp.K_b", "must be >= 0, got " + num(dp.K_b));
+    require(dp.E_c > 0, "dp.E_c", "must be > 0, got " + num(dp.E_c));
+  }
+  if (skin == 0) skin = is_dp() ? 0.1 : 0.3;
   if (N == 0) N = dimension == 2 ? 1600 : 6400;
   if (W == 0) W = dimension == 2 ? 50.0 : 25.0;
   require(N >= 2, "N", "must be at least 2, got " + std::to_string(N));
@@ -242,7 +264,10 @@ nlohmann::json SimConfig::to_json() const {
   j["w"] = w;
   j["theta_w_left_deg"] = theta_w_left_deg;
   j["theta_w_right_deg"] = theta_w_right_deg;
-  j["E_sp"] = E_sp;
+  if (is_dp())
+    j["dp"] = {{"n_v", dp.n_v}, {"K_a", dp.K_a}, {"K_l", dp.K_l}, {"K_b", dp.K_b}, {"E_c", dp.E_c}};
+  else
+    j["E_sp"] = E_sp;
   j["E_w"] = E_w;
   j["zeta"] = zeta;
   j["mu"] = mu;

@@ -70,9 +70,21 @@ struct ObservableParams {
   double kernel_width = 1.0;     ///< Gaussian coarse-graining width (sigma_avg)
 };
 
+/// Deformable-particle (DP) model constants (physics.md 4); used by the models dp_smooth and
+/// dp_rough only. Energies in g rho sigma_avg^2 units as in the paper (K_a = k_a, ...).
+struct DpParams {
+  int n_v = 16;       ///< vertices per polygon
+  double K_a = 1e4;   ///< area stiffness (area nearly conserved for K_a >= 1e4)
+  double K_l = 10.0;  ///< segment-length (perimeter) stiffness
+  double K_b = 0.1;   ///< bending stiffness (K_b > 1e2: rigid limit)
+  double E_c = 1e4;   ///< vertex-vertex (rough) or vertex-edge (smooth) contact stiffness
+};
+
 struct SimConfig {
   // --- model and system -------------------------------------------------------------
-  std::string model = "sp";  ///< "sp" (soft particles); "dp_rough"/"dp_smooth" come later
+  /// "sp" (soft particles, 2D/3D), "dp_smooth" (deformable polygons with circulo-line edges,
+  /// nearly frictionless) or "dp_rough" (deformable polygons with vertex disks), both 2D.
+  std::string model = "sp";
   int dimension = 2;
   int N = 0;                 ///< 0: default (1600 in 2D, 6400 in 3D)
   double size_ratio = 1.4;   ///< sigma_l / sigma_s
@@ -86,9 +98,10 @@ struct SimConfig {
   double zeta = -1;     ///< viscous drag; required
   double mu = -1;       ///< kinetic friction; required
   double gravity = 1.0; ///< in units of g (tests switch it off)
+  DpParams dp;          ///< DP models only
   // --- numerics -----------------------------------------------------------------------
   std::optional<double> dt;  ///< unset: "auto"
-  double skin = 0.3;         ///< Verlet-list skin (not physics; only speed)
+  double skin = 0;           ///< Verlet-list skin (not physics; only speed); 0: 0.3 (SP), 0.1 (DP, over vertices)
   /// A relative pair overlap 1 - r/sigma_mn above this stops the run as unstable. Half a
   /// diameter (0.5) is exceeded physically at E_sp = 100, N = 1600: without wall friction the
   /// pressure grows with depth, and force chains at the bottom of the pile reach 0.5-0.6
@@ -116,6 +129,7 @@ struct SimConfig {
   /// controls, skin and max_overlap excluded: they must not change the trajectory).
   std::uint64_t effective_seed() const;
 
+  bool is_dp() const { return model == "dp_smooth" || model == "dp_rough"; }
   // Derived sizes (valid after resolve_and_validate).
   double sigma_small() const { return 2.0 / (1.0 + size_ratio); }
   double sigma_large() const { return size_ratio * sigma_small(); }

@@ -15,9 +15,10 @@ namespace beverloo {
 
 struct ForceReport {
   double U_contact = 0, U_wall = 0, U_gravity = 0;
+  double U_shape = 0;  ///< DP shape energy (area, segment length, bending); 0 for SP
   double P_drag = 0, P_friction = 0;
   double max_overlap = 0;  ///< largest relative pair overlap 1 - r/sigma_mn
-  double potential() const { return U_contact + U_wall + U_gravity; }
+  double potential() const { return U_contact + U_wall + U_gravity + U_shape; }
 };
 
 template <int D>

@@ -7,6 +7,7 @@
 #include "force_term.h"
 #include "harmonic_overlap.h"
 
+#include <array>
 #include <cmath>
 
 namespace beverloo {
@@ -16,6 +17,10 @@ class HopperWalls final : public ForceTerm<D> {
  public:
   HopperWalls(const Hopper<D>& hopper, const NeighborList<D>& list, double E_w)
       : hopper_(hopper), list_(list), eps_(E_w) {}
+  /// Walls felt at the contact diameters of the two species instead of the state's sigma
+  /// (DP vertices: the list's reach is wider than a vertex's contact diameter).
+  HopperWalls(const Hopper<D>& hopper, const NeighborList<D>& list, double E_w, std::array<double, 2> diameters)
+      : hopper_(hopper), list_(list), eps_(E_w), diameters_(diameters), own_diameters_(true) {}
   std::string_view name() const override { return "hopper_walls"; }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
     double energy = 0;
@@ -23,7 +28,7 @@ class HopperWalls final : public ForceTerm<D> {
     for (int i = 0; i < n; ++i) {
       std::uint8_t mask = list_.wall_mask(i);
       if (!mask) continue;
-      const double half = 0.5 * s.sigma(i), inv_half = 1.0 / half;
+      const double half = 0.5 * (own_diameters_ ? diameters_[s.species[i]] : s.sigma(i)), inv_half = 1.0 / half;
       for (int w = 0; mask; ++w, mask >>= 1) {
         if (!(mask & 1u)) continue;
         const Vec<D> away = s.x[i] - hopper_.nearest_point(w, s.x[i]);
@@ -42,6 +47,8 @@ class HopperWalls final : public ForceTerm<D> {
   const Hopper<D>& hopper_;
   const NeighborList<D>& list_;
   double eps_;
+  std::array<double, 2> diameters_{};
+  bool own_diameters_ = false;
 };
 
 }  // namespace beverloo

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "../forces/harmonic_overlap.h"
+#include "../dp/polygons.h"
 #include "../state.h"
 #include "../units.h"
 
@@ -17,28 +18,53 @@ TimeStepChoice choose_time_step(const SimConfig& c) {
   t.period_min = std::numeric_limits<double>::infinity();
   t.tau_min = std::numeric_limits<double>::infinity();
   auto period = [](double m, double k) { return 2 * units::pi * std::sqrt(m / k); };
-  for (int a = 0; a < 2; ++a) {
-    for (int b = a; b < 2; ++b) {
-      const double m_red = sp.mass[a] * sp.mass[b] / (sp.mass[a] + sp.mass[b]);
-      const double T = period(m_red, HarmonicOverlap::stiffness(c.E_sp, 0.5 * (sp.sigma[a] + sp.sigma[b])));
-      if (T < t.period_min) {
-        t.period_min = T;
-        t.period_term = std::string("E_sp (") + names[a] + "-" + names[b] + " contact)";
-      }
-      if (c.mu > 0 && m_red / c.mu < t.tau_min) {
-        t.tau_min = m_red / c.mu;
-        t.tau_term = std::string("mu (kinetic friction, ") + names[a] + "-" + names[b] + ")";
-      }
+  auto consider_period = [&](double T, const std::string& term) {
+    if (T < t.period_min) {
+      t.period_min = T;
+      t.period_term = term;
     }
-    // wall: U = (E_w/2)(1 - d/(sigma/2))^2, contact distance sigma/2, infinite wall mass
-    const double Tw = period(sp.mass[a], HarmonicOverlap::stiffness(c.E_w, 0.5 * sp.sigma[a]));
-    if (Tw < t.period_min) {
-      t.period_min = Tw;
-      t.period_term = std::string("E_w (wall, ") + names[a] + " particle)";
+  };
+  auto consider_tau = [&](double tau, const std::string& term) {
+    if (tau < t.tau_min) {
+      t.tau_min = tau;
+      t.tau_term = term;
     }
-    if (c.zeta > 0 && sp.mass[a] / c.zeta < t.tau_min) {
-      t.tau_min = sp.mass[a] / c.zeta;
-      t.tau_term = std::string("zeta (drag, ") + names[a] + " particle)";
+  };
+  if (c.is_dp()) {
+    // Per vertex (mass M/n_v); the contact acts on the reduced mass of two vertices.
+    const DpShape shape = DpShape::from_config(c);
+    const double nv = shape.n_v;
+    for (int a = 0; a < 2; ++a) {
+      const double mv = shape.vertex_mass[a], l0 = shape.l0[a];
+      for (int b = a; b < 2; ++b) {
+        const double m_red = mv * shape.vertex_mass[b] / (mv + shape.vertex_mass[b]);
+        const double delta = 0.5 * (shape.delta[a] + shape.delta[b]);
+        const std::string pair = std::string(names[a]) + "-" + names[b];
+        consider_period(period(m_red, HarmonicOverlap::stiffness(c.dp.E_c, delta)), "dp.E_c (" + pair + " vertex contact)");
+        if (c.mu > 0) consider_tau(m_red / c.mu, "mu (kinetic friction, " + pair + " vertices)");
+      }
+      const std::string who = std::string(names[a]) + " vertex";
+      consider_period(period(mv, HarmonicOverlap::stiffness(c.E_w, 0.5 * shape.delta[a])), "E_w (wall, " + who + ")");
+      // edge spring K_l n_v between two vertices; area: |grad a|^2 ~ l0^2 per vertex;
+      // bending: moving one vertex by x turns three edge pairs, curvature 6 K_b/(n_v l0^4)
+      consider_period(period(0.5 * mv, c.dp.K_l * nv), "dp.K_l (segment length, " + who + ")");
+      consider_period(period(mv, c.dp.K_a * l0 * l0), "dp.K_a (area, " + who + ")");
+      if (c.dp.K_b > 0) consider_period(period(mv, 6 * c.dp.K_b / (nv * l0 * l0 * l0 * l0)), "dp.K_b (bending, " + who + ")");
+      if (c.zeta > 0) consider_tau(mv / (c.zeta / nv), "zeta (drag, " + who + ")");
+    }
+  } else {
+    for (int a = 0; a < 2; ++a) {
+      for (int b = a; b < 2; ++b) {
+        const double m_red = sp.mass[a] * sp.mass[b] / (sp.mass[a] + sp.mass[b]);
+        const std::string pair = std::string(names[a]) + "-" + names[b];
+        consider_period(period(m_red, HarmonicOverlap::stiffness(c.E_sp, 0.5 * (sp.sigma[a] + sp.sigma[b]))),
+                        "E_sp (" + pair + " contact)");
+        if (c.mu > 0) consider_tau(m_red / c.mu, "mu (kinetic friction, " + pair + ")");
+      }
+      // wall: U = (E_w/2)(1 - d/(sigma/2))^2, contact distance sigma/2, infinite wall mass
+      consider_period(period(sp.mass[a], HarmonicOverlap::stiffness(c.E_w, 0.5 * sp.sigma[a])),
+                      std::string("E_w (wall, ") + names[a] + " particle)");
+      if (c.zeta > 0) consider_tau(sp.mass[a] / c.zeta, std::string("zeta (drag, ") + names[a] + " particle)");
     }
   }
   t.largest_accepted = std::min(t.period_min / kRefusePeriodFraction, t.tau_min);

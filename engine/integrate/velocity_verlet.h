@@ -18,8 +18,9 @@ struct StepReport {
 /// One step. between_drift_and_force(s) runs after the positions are advanced and before the
 /// forces are evaluated: where the protocol counts exits and reinjects particles, so that the
 /// forces of the step always belong to the final positions.
-template <int D, class Hook>
-StepReport velocity_verlet_step(ParticleState<D>& s, ForceField<D>& ff, double dt, Hook&& between_drift_and_force) {
+/// FF is ForceField<D> or DpForceField (anything with ForceReport compute(ParticleState<D>&)).
+template <int D, class FF, class Hook>
+StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt, Hook&& between_drift_and_force) {
   const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
   const int n = s.size();
   for (int i = 0; i < n; ++i) {
@@ -40,8 +41,8 @@ StepReport velocity_verlet_step(ParticleState<D>& s, ForceField<D>& ff, double d
   return r;
 }
 
-template <int D>
-StepReport velocity_verlet_step(ParticleState<D>& s, ForceField<D>& ff, double dt) {
+template <int D, class FF>
+StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt) {
   return velocity_verlet_step(s, ff, dt, [](ParticleState<D>&) {});
 }
 

@@ -27,6 +27,12 @@ class NeighborList {
     return true;
   }
   void build(const ParticleState<D>& s, const Hopper<D>& hopper);
+  /// Items with equal group ids are never listed as pairs (vertices of one polygon); the
+  /// vector must outlive the list. nullptr: all pairs (SP particles).
+  void set_groups(const std::vector<int>* group) {
+    group_ = group;
+    force_ = true;
+  }
   /// Forces the next update() to rebuild.
   void invalidate() { force_ = true; }
   /// Particle i was moved far (reinjection): take it out of the list and put it back at its
@@ -48,7 +54,10 @@ class NeighborList {
  private:
   bool moved_beyond_half_skin(const ParticleState<D>& s) const;
 
+  bool same_group(int i, int j) const { return group_ && (*group_)[i] == (*group_)[j]; }
+
   double skin_;
+  const std::vector<int>* group_ = nullptr;
   bool force_ = true;
   std::int64_t builds_ = 0;
   VecArray<D> x_ref_;

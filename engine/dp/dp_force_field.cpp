@@ -1,0 +1,69 @@
+#include "dp_force_field.h"
+
+namespace beverloo {
+
+std::array<double, 2> DpForceField::list_diameters(const DpShape& shape) {
+  if (!shape.smooth) return {shape.delta[0], shape.delta[1]};  // vertex disks: contact = reach
+  // a vertex within delta_mn of an edge is within max_edge + delta_mn of the edge's start
+  return {shape.max_edge + shape.delta[0], shape.max_edge + shape.delta[1]};
+}
+
+DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const PolygonSet& p, const DpShape& shape,
+                           double E_c)
+    : shape_(shape),
+      list_(c.skin),
+      area_(p, shape, c.dp.K_a),
+      segments_(p, shape, c.dp.K_l),
+      bending_(p, shape, c.dp.K_b),
+      walls_(hopper, list_, c.E_w, {shape.delta[0], shape.delta[1]}),
+      gravity_(c.gravity),
+      drag_(c.zeta / shape.n_v),
+      hopper_(hopper) {
+  list_.set_groups(&p.owner);
+  if (shape.smooth)
+    smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, c.mu);
+  else
+    rough_ = std::make_unique<SpContact<2>>(list_, E_c, c.mu);
+}
+
+ForceReport DpForceField::compute(ParticleState<2>& s) {
+  list_.update(s, hopper_);
+  for (auto& fi : s.f) fi.setZero();
+  ForceReport r;
+  r.U_shape = area_.accumulate(s, s.f).energy + segments_.accumulate(s, s.f).energy + bending_.accumulate(s, s.f).energy;
+  if (smooth_) {
+    const TermOutput o = smooth_->accumulate(s, s.f);
+    r.U_contact = o.energy;
+    r.P_friction = o.power;
+    r.max_overlap = smooth_->max_overlap();
+  } else {
+    const TermOutput o = rough_->accumulate(s, s.f);
+    r.U_contact = o.energy;
+    r.P_friction = o.power;
+    r.max_overlap = rough_->max_overlap();
+  }
+  r.U_wall = walls_.accumulate(s, s.f).energy;
+  r.U_gravity = gravity_.accumulate(s, s.f).energy;
+  r.P_drag = drag_.accumulate(s, s.f).power;
+  return r;
+}
+
+void DpForceField::set_dissipation(bool on) {
+  if (smooth_) smooth_->set_friction_enabled(on);
+  if (rough_) rough_->set_friction_enabled(on);
+  drag_.set_enabled(on);
+}
+
+void DpForceField::friction_forces(const ParticleState<2>& s, VecArray<2>& out) const {
+  if (smooth_)
+    smooth_->friction_forces(s, out);
+  else
+    rough_->friction_forces(s, out);
+}
+
+std::vector<ForceTerm<2>*> DpForceField::terms() {
+  ForceTerm<2>* contact = smooth_ ? static_cast<ForceTerm<2>*>(smooth_.get()) : rough_.get();
+  return {&area_, &segments_, &bending_, contact, &walls_, &gravity_, &drag_};
+}
+
+}  // namespace beverloo

@@ -1,0 +1,87 @@
+#include "dp_smooth_contact.h"
+
+#include <cmath>
+
+#include "harmonic_overlap.h"
+
+namespace beverloo {
+
+template <DpSmoothContact::Mode kMode>
+void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy,
+                                  double& power, double& max_ov) const {
+  const int an = p_.next[a];
+  const Vec<2> ra = s.x[a];
+  const Vec<2> e = s.x[an] - ra;
+  const Vec<2> q = s.x[b] - ra;
+  const double e2 = e.squaredNorm();
+  const double t = q.dot(e) / e2;
+  const double dmn = 0.5 * (shape_.delta[s.species[a]] + shape_.delta[s.species[b]]);
+  double d, w_start, w_end;  // distance; lever weights of the edge's start and end vertices
+  Vec<2> dir;                // unit vector along which d grows when vertex b moves
+  if (t >= 0 && t <= 1) {
+    const double inv_len = 1.0 / std::sqrt(e2);
+    dir = Vec<2>(e[1] * inv_len, -e[0] * inv_len);  // outward normal (counter-clockwise polygon)
+    d = q.dot(dir);
+    if (d >= dmn || d <= -dmn) return;
+    w_start = 1 - t;
+    w_end = t;
+  } else if (t < 0) {
+    // Inside the previous edge's slab (t_prev <= 1) the previous edge has the contact. t_prev
+    // is computed with the very operations of that edge's own test, so that exactly one of the
+    // two branches holds on the boundary.
+    const Vec<2> rp = s.x[p_.prev[a]];
+    const Vec<2> ep = ra - rp;
+    if ((s.x[b] - rp).dot(ep) / ep.squaredNorm() <= 1) return;
+    const double d2 = q.squaredNorm();
+    if (d2 >= dmn * dmn) return;
+    d = std::sqrt(d2);
+    dir = q / d;
+    w_start = 1;
+    w_end = 0;
+  } else {
+    return;  // beyond the end: the next edge's start vertex (its wedge) or its slab
+  }
+  if constexpr (kMode != Mode::FrictionOnly) {
+    double dU_dd;
+    energy += HarmonicOverlap::energy(eps_, d, 1.0 / dmn, dU_dd);
+    const double ov = 1.0 - d / dmn;
+    max_ov = ov > max_ov ? ov : max_ov;
+    const Vec<2> fb = -dU_dd * dir;  // on the vertex, away from the edge
+    f[b] += fb;
+    f[a] -= w_start * fb;
+    f[an] -= w_end * fb;
+  }
+  if constexpr (kMode != Mode::Repulsion) {
+    const Vec<2> rel = s.v[b] - (w_start * s.v[a] + w_end * s.v[an]);
+    const Vec<2> ff = -mu_ * rel;
+    power += ff.dot(rel);
+    f[b] += ff;
+    f[a] -= w_start * ff;
+    f[an] -= w_end * ff;
+  }
+}
+
+template <DpSmoothContact::Mode kMode>
+TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) const {
+  double energy = 0, power = 0, max_ov = 0;
+  const int n = s.size();
+  for (int i = 0; i < n; ++i) {
+    for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
+      edge_vertex<kMode>(s, f, i, *p, energy, power, max_ov);
+      edge_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
+    }
+  }
+  if constexpr (kMode != Mode::FrictionOnly) const_cast<DpSmoothContact*>(this)->max_overlap_ = max_ov;
+  return {energy, power};
+}
+
+TermOutput DpSmoothContact::accumulate(const ParticleState<2>& s, VecArray<2>& f) {
+  return (friction_on_ && mu_ > 0) ? loop<Mode::RepulsionAndFriction>(s, f) : loop<Mode::Repulsion>(s, f);
+}
+
+void DpSmoothContact::friction_forces(const ParticleState<2>& s, VecArray<2>& out) const {
+  out.assign(s.size(), Vec<2>::Zero());
+  if (mu_ > 0) loop<Mode::FrictionOnly>(s, out);
+}
+
+}  // namespace beverloo

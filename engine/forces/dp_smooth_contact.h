@@ -1,0 +1,60 @@
+#pragma once
+/// \file dp_smooth_contact.h
+/// \brief Contacts of the smooth ("frictionless") DP model (physics.md 4, paper Appendix A):
+/// edge i of polygon m is a circulo-line of width delta_m; against vertex j of polygon n
+/// (m != n) the energy is (E_c/2)(1 - d/delta_mn)^2 for d < delta_mn with
+///  - d the perpendicular (signed, outward) distance (r_j - r_i) . nhat_i when the foot of r_j
+///    lies on the edge (0 <= t <= 1); the reaction -F on the edge is split between its end
+///    vertices by the lever rule, (1 - t) and t, which is the exact gradient;
+///  - d = |r_j - r_i| (the edge's start vertex) when the foot lies before the edge (t < 0).
+///
+/// Decision (corner rule): the start-vertex branch applies only where r_j is also beyond the
+/// previous edge (its foot there has t_prev > 1), i.e. in the wedge outside both edge slabs.
+/// The literal rule would count a vertex near a convex corner twice (once by the edge, once by
+/// the next edge's start vertex) and its energy would jump when the vertex leaves the slab;
+/// with the wedge rule the energy is continuous and its gradient too at convex corners.
+///
+/// Kinetic friction acts between the vertex and the contact point P on the edge:
+/// F_j = -mu (v_j - v_P), v_P = (1 - t) v_i + t v_next(i), split on the edge by the lever rule
+/// (dissipative: power -mu |v_j - v_P|^2 per contact; momentum conserving).
+///
+/// Every edge-vertex pair of different polygons within reach is found from the vertex Verlet
+/// list: a vertex within delta_mn of edge i is within |l_i| + delta_mn of its start vertex,
+/// and the list's reach (vertex "diameter" max_edge + delta) covers that. Each list pair (a, b)
+/// evaluates edge a against vertex b and edge b against vertex a, so every edge-vertex pair
+/// is counted exactly once.
+#include "../dp/polygons.h"
+#include "../neighbor/neighbor_list.h"
+#include "force_term.h"
+
+namespace beverloo {
+
+class DpSmoothContact final : public ForceTerm<2> {
+ public:
+  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c, double mu)
+      : list_(list), p_(p), shape_(shape), eps_(E_c), mu_(mu) {}
+  std::string_view name() const override { return "dp_smooth_contact"; }
+  TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override;
+  /// Friction force on each vertex alone (for the |F^mu| observable); overwrites out.
+  void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
+  void set_friction_enabled(bool on) { friction_on_ = on; }
+  /// Largest relative overlap 1 - d/delta_mn seen in the last accumulate().
+  double max_overlap() const { return max_overlap_; }
+
+ private:
+  enum class Mode { Repulsion, RepulsionAndFriction, FrictionOnly };
+  template <Mode kMode>
+  TermOutput loop(const ParticleState<2>& s, VecArray<2>& f) const;
+  template <Mode kMode>
+  void edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
+                   double& max_ov) const;
+
+  const NeighborList<2>& list_;
+  const PolygonSet& p_;
+  const DpShape& shape_;
+  double eps_, mu_;
+  bool friction_on_ = true;
+  double max_overlap_ = 0;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,245 @@
+// DP force terms (physics.md 4): every term against finite differences on randomly deformed
+// polygons, the smooth contact against an independent brute-force evaluation (every edge
+// against every vertex of the other polygons, both ways), its corner case, momentum,
+// rigid-motion invariance and dissipation.
+#include <gtest/gtest.h>
+
+#include "dp_support.h"
+
+namespace beverloo {
+namespace {
+using testing::DpFixture;
+using testing::dp_config;
+
+/// Central differences of every conservative term for every vertex coordinate.
+void check_gradients(DpFixture& fx, int min_terms_with_energy) {
+  fx.verts.x[fx.poly.first[6]] = Vec<2>(-4.5, 0.005);  // on the floor, inside the wall's reach
+  fx.verts.x[fx.poly.first[7] + 4] = Vec<2>(5.997, 2.3);  // on the side wall
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  ff.set_dissipation(false);
+  ParticleState<2>& s = fx.verts;
+  int with_energy = 0;
+  for (ForceTerm<2>* term : ff.terms()) {
+    auto energy = [&] {
+      ff.list().build(s, h);
+      VecArray<2> f(s.size(), Vec<2>::Zero());
+      return term->accumulate(s, f).energy;
+    };
+    ff.list().build(s, h);
+    VecArray<2> f(s.size(), Vec<2>::Zero());
+    const double e0 = term->accumulate(s, f).energy;
+    if (e0 != 0) ++with_energy;
+    const double eps = 1e-7;
+    for (int i = 0; i < s.size(); ++i)
+      for (int d = 0; d < 2; ++d) {
+        const double keep = s.x[i][d];
+        s.x[i][d] = keep + eps;
+        const double up = energy();
+        s.x[i][d] = keep - eps;
+        const double down = energy();
+        s.x[i][d] = keep;
+        const double numeric = -(up - down) / (2 * eps);
+        ASSERT_NEAR(f[i][d], numeric, 1e-4 * std::max(1.0, std::fabs(f[i][d])))
+            << term->name() << " vertex " << i << " component " << d;
+      }
+  }
+  EXPECT_GE(with_energy, min_terms_with_energy);
+}
+
+/// Polygons pressed together: neighbours' centres closer than their diameters.
+std::vector<Vec<2>> cluster() {
+  return {{-0.9, 3.0}, {0.05, 3.05}, {1.0, 2.95}, {-0.45, 3.85}, {0.5, 3.9}, {0.0, 2.1}, {-4.5, 0.55}, {4.2, 2.0}};
+}
+
+TEST(DpForces, GradientsSmoothDeformed) {
+  DpFixture fx(dp_config("dp_smooth", 8), cluster(), 0.2, 3);
+  check_gradients(fx, 6);  // area, segments, bending, contact, walls, gravity
+}
+
+TEST(DpForces, GradientsRoughDeformed) {
+  DpFixture fx(dp_config("dp_rough", 8), cluster(), 0.2, 4);
+  check_gradients(fx, 6);
+}
+
+TEST(DpForces, GradientsSmoothSoftShapes) {
+  SimConfig c = dp_config("dp_smooth", 8);
+  c.dp.K_l = 1;
+  c.dp.K_b = 1e-2;
+  c.dp.E_c = 1e2;
+  DpFixture fx(c, cluster(), 0.35, 5);
+  check_gradients(fx, 6);
+}
+
+/// Independent evaluation: every edge of every polygon against every vertex of the others,
+/// distance from the clamped foot point (start vertex before the edge, nothing after it),
+/// the start-vertex branch only outside the previous edge's slab.
+double brute_force_smooth_energy(const DpFixture& fx, double eps_c, int edges_of = -1) {
+  const auto& p = fx.poly;
+  const auto& x = fx.verts.x;
+  double energy = 0;
+  for (int a = 0; a < p.vertices(); ++a)
+    for (int b = 0; b < p.vertices(); ++b) {
+      if (p.owner[a] == p.owner[b] || (edges_of >= 0 && p.owner[a] != edges_of)) continue;
+      const Vec<2> e = x[p.next[a]] - x[a], q = x[b] - x[a];
+      const double t = q.dot(e) / e.squaredNorm();
+      const double dmn = 0.5 * (fx.shape.delta[fx.verts.species[a]] + fx.shape.delta[fx.verts.species[b]]);
+      double d;
+      if (t >= 0 && t <= 1) {
+        d = (e[1] * q[0] - e[0] * q[1]) / e.norm();
+        if (std::fabs(d) >= dmn) continue;
+      } else if (t < 0 && (x[b] - x[p.prev[a]]).dot(x[a] - x[p.prev[a]]) / (x[a] - x[p.prev[a]]).squaredNorm() > 1) {
+        d = q.norm();
+        if (d >= dmn) continue;
+      } else {
+        continue;
+      }
+      energy += 0.5 * eps_c * (1 - d / dmn) * (1 - d / dmn);
+    }
+  return energy;
+}
+
+TEST(DpForces, SmoothContactMatchesBruteForceBothWays) {
+  DpFixture fx(dp_config("dp_smooth", 8), cluster(), 0.2, 6);
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  ff.list().build(fx.verts, h);
+  VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+  const double e = ff.terms()[3]->accumulate(fx.verts, f).energy;
+  ASSERT_GT(e, 0);
+  EXPECT_NEAR(e, brute_force_smooth_energy(fx, fx.c.dp.E_c), 1e-10 * e);
+  // relabelled: the polygons in reverse order give the same energy (pairs seen the other way)
+  ParticleState<2> rev = fx.verts;
+  const int nv = fx.c.dp.n_v, np = fx.poly.polygons();
+  for (int m = 0; m < np; ++m)
+    for (int k = 0; k < nv; ++k) {
+      rev.x[m * nv + k] = fx.verts.x[(np - 1 - m) * nv + k];
+      rev.species[m * nv + k] = fx.verts.species[(np - 1 - m) * nv + k];
+    }
+  ff.list().build(rev, h);
+  VecArray<2> g(rev.size(), Vec<2>::Zero());
+  EXPECT_NEAR(ff.terms()[3]->accumulate(rev, g).energy, e, 1e-10 * e);
+}
+
+TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
+  // Vertex j of polygon 1 (a spike: its polygon is far away, its edges point away) travels
+  // inside the contact shell of polygon 0 along edge i-1, around the convex corner i on an
+  // arc, and along edge i. The energy of polygon 0's edges against j must stay constant: the
+  // shell has constant thickness, the vertex is counted once, nothing jumps at the slab
+  // boundaries. The engine's total must equal the brute-force total at every point.
+  SimConfig c = dp_config("dp_smooth", 2);
+  DpFixture fx(c, {{0.0, 3.0}, {0.0, 6.0}}, 0.0, 1);
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  auto& x = fx.verts.x;
+  const int corner = 3, j = fx.poly.first[1];
+  const Vec<2> r = x[corner];
+  const Vec<2> e_in = (r - x[fx.poly.prev[corner]]).normalized(), e_out = (x[fx.poly.next[corner]] - r).normalized();
+  const Vec<2> n_in(e_in[1], -e_in[0]), n_out(e_out[1], -e_out[0]);
+  const double delta = 0.5 * (fx.shape.delta[0] + fx.shape.delta[1]), gap = 0.6 * delta;
+  const double a0 = std::atan2(n_in[1], n_in[0]);
+  double da = std::atan2(n_out[1], n_out[0]) - a0;
+  if (da < 0) da += 2 * units::pi;
+  ASSERT_GT(da, 0.05);
+  const double expected = 0.5 * c.dp.E_c * 0.4 * 0.4;
+  double previous = -1;
+  for (int k = -20; k <= 60; ++k) {
+    Vec<2> pos;
+    if (k < 0)
+      pos = r + gap * n_in + (0.01 * k * fx.shape.l0[0]) * e_in;
+    else if (k > 40)
+      pos = r + gap * n_out + (0.01 * (k - 40) * fx.shape.l0[0]) * e_out;
+    else
+      pos = r + gap * Vec<2>(std::cos(a0 + da * k / 40.0), std::sin(a0 + da * k / 40.0));
+    // polygon 1 rigidly far out along the local normal, then its vertex j pulled to pos
+    const Vec<2> out = k < 0 ? n_in : k > 40 ? n_out : Vec<2>((pos - r).normalized());
+    place_regular_polygon(fx.poly, fx.shape, fx.verts, 1, pos + 3.0 * out, 0.0, Vec<2>::Zero());
+    x[j] = pos;
+    ff.list().build(fx.verts, h);
+    VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+    const double total = ff.terms()[3]->accumulate(fx.verts, f).energy;
+    EXPECT_NEAR(total, brute_force_smooth_energy(fx, c.dp.E_c), 1e-9 * expected) << "step " << k;
+    const double on_polygon0 = brute_force_smooth_energy(fx, c.dp.E_c, /*edges_of=*/0);
+    EXPECT_NEAR(on_polygon0, expected, 1e-9 * expected) << "step " << k;
+    if (previous >= 0) EXPECT_LT(std::fabs(total - previous), 0.25 * expected) << "jump at step " << k;  // a double count would jump by 1
+    previous = total;
+  }
+}
+
+TEST(DpForces, ContactForcesConserveMomentumAndFrictionDissipates) {
+  for (const char* model : {"dp_smooth", "dp_rough"}) {
+    DpFixture fx(dp_config(model, 8, 0.7, 3.0), cluster(), 0.2, 7);
+    testing::random_velocities(fx.verts, 8, 1.0);
+    const Hopper<2> h = make_hopper<2>(fx.c);
+    DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+    ff.list().build(fx.verts, h);
+    const auto terms = ff.terms();
+    for (int k : {0, 1, 2, 3}) {  // shape terms and the contact: internal forces
+      VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+      const TermOutput out = terms[k]->accumulate(fx.verts, f);
+      Vec<2> total = Vec<2>::Zero();
+      double torque = 0, scale = 0;
+      for (int i = 0; i < fx.verts.size(); ++i) {
+        total += f[i];
+        torque += fx.verts.x[i][0] * f[i][1] - fx.verts.x[i][1] * f[i][0];
+        scale += f[i].norm();
+      }
+      ASSERT_GT(scale, 0) << model << " " << terms[k]->name();
+      EXPECT_LT(total.norm(), 1e-11 * scale) << model << " " << terms[k]->name();
+      if (k < 3) {
+        EXPECT_LT(std::fabs(torque), 1e-10 * scale) << model << " " << terms[k]->name();
+      }
+      if (k == 3) {
+        EXPECT_LT(out.power, 0) << model << ": friction must remove energy";
+        VecArray<2> fr;
+        ff.friction_forces(fx.verts, fr);
+        double power = 0;
+        Vec<2> net = Vec<2>::Zero();
+        for (int i = 0; i < fx.verts.size(); ++i) {
+          power += fr[i].dot(fx.verts.v[i]);
+          net += fr[i];
+        }
+        EXPECT_NEAR(power, out.power, 1e-9 * std::fabs(out.power)) << model;
+        EXPECT_LT(net.norm(), 1e-11 * scale) << model;
+      }
+    }
+    VecArray<2> fd(fx.verts.size(), Vec<2>::Zero());
+    EXPECT_LT(terms[6]->accumulate(fx.verts, fd).power, 0) << model << ": drag";
+  }
+}
+
+TEST(DpForces, ShapeEnergiesAreInvariantUnderRigidMotionAndZeroForReferencePolygons) {
+  DpFixture fx(dp_config("dp_smooth", 2), {{-3, 4}, {3, 4}}, 0.25, 9);
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  auto shape_energy = [&](const ParticleState<2>& s) {
+    double e = 0;
+    for (int k = 0; k < 3; ++k) {
+      VecArray<2> f(s.size(), Vec<2>::Zero());
+      e += ff.terms()[k]->accumulate(s, f).energy;
+    }
+    return e;
+  };
+  const double e0 = shape_energy(fx.verts);
+  ASSERT_GT(e0, 0);
+  ParticleState<2> moved = fx.verts;
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for (auto& x : moved.x) x = Vec<2>(c * x[0] - s * x[1] + 1.3, s * x[0] + c * x[1] - 0.4);
+  EXPECT_NEAR(shape_energy(moved), e0, 1e-10 * e0);
+  // reference polygons: no area or segment energy; bending sum |u_i - u_i+1|^2 = n (2 sin(pi/n))^2
+  DpFixture regular(dp_config("dp_smooth", 2), {{-3, 4}, {3, 4}}, 0.0, 9);
+  double parts[3];
+  for (int k = 0; k < 3; ++k) {
+    VecArray<2> f(regular.verts.size(), Vec<2>::Zero());
+    parts[k] = ff.terms()[k]->accumulate(regular.verts, f).energy;
+  }
+  EXPECT_LT(parts[0] + parts[1], 1e-20);
+  const double n = regular.c.dp.n_v, turn = std::pow(2 * std::sin(units::pi / n), 2);
+  double bending = 0;
+  for (int m = 0; m < 2; ++m) bending += regular.c.dp.K_b / (2 * n * std::pow(regular.shape.l0[m], 2)) * n * turn;
+  EXPECT_NEAR(parts[2], bending, 1e-12 * bending);
+  EXPECT_NEAR(polygon_area(regular.poly, regular.verts.x, 1), regular.shape.a0[1], 1e-12);
+}
+
+}  // namespace
+}  // namespace beverloo

@@ -1,5 +1,5 @@
-// `beverloo bench [--runs R] [--case a|b|c ...] [--steps S]`: the standard performance cases,
-// particle-steps per second, median and spread of R timed runs from the same flowing state.
+// `beverloo bench [--runs R] [--case a|b|c|d|e ...] [--scale S]`: the standard performance cases,
+// particle-steps (SP) or vertex-steps (DP) per second, median and spread of R timed runs from the same flowing state.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -35,6 +35,20 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
     return c;
   };
   const double mu_f = 10 * std::sqrt(10.0), zeta_d = 1 / std::sqrt(10.0);
+  auto dp = [&](const std::string& model) {
+    SimConfig c;
+    c.model = model;
+    c.N = 1600;
+    c.w = 6;
+    c.dp.K_l = 10;
+    c.dp.K_b = 0.1;
+    c.zeta = zeta_d;
+    c.mu = 0;
+    c.seed = 1;
+    if (skin > 0) c.skin = skin;
+    c.resolve_and_validate();
+    return c;
+  };
   return {
       {"a", "2D SP N=1600 w=6 E_sp=100 friction only (mu=10 sqrt 10)", base(2, 1600, 0, mu_f), 30,
        std::llround(20000 * scale)},
@@ -42,6 +56,10 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
        std::llround(20000 * scale)},
       {"c", "3D SP N=6400 w=6 E_sp=100 friction only (mu=10 sqrt 10)", base(3, 6400, 0, mu_f), 10,
        std::llround(4000 * scale)},
+      {"d", "2D smooth DP N=1600 N_v=16 K_l=10 K_b=0.1 E_c=1e4 w=6 drag only", dp("dp_smooth"), 20,
+       std::llround(2000 * scale)},
+      {"e", "2D rough DP N=1600 N_v=16 K_l=10 K_b=0.1 E_c=1e4 w=6 drag only", dp("dp_rough"), 20,
+       std::llround(2000 * scale)},
   };
 }
 
@@ -56,19 +74,19 @@ void run_case(const BenchCase& bc, int runs) {
     HopperRun<D> run = HopperRun<D>(bc.config, RunOptions{});
     run.prepare();
     // every timed run starts from the same warmed-up state
-    run.state() = warm.state();
-    run.forces().list().invalidate();
+    run.copy_state_from(warm);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::int64_t builds_before = run.forces().list().builds();
+    const std::int64_t builds_before = run.neighbor_builds();
     run.advance(bc.steps);
-    builds_per_kstep = 1000.0 * (run.forces().list().builds() - builds_before) / bc.steps;
+    builds_per_kstep = 1000.0 * (run.neighbor_builds() - builds_before) / bc.steps;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    rates.push_back(bc.steps * double(bc.config.N) / s);
+    rates.push_back(bc.steps * double(run.moving_points()) / s);
   }
   std::sort(rates.begin(), rates.end());
   const double median = rates[rates.size() / 2];
-  std::printf("%-2s %-58s skin %.2f builds/1000 steps %.1f  median %8.3g  min %8.3g  max %8.3g particle-steps/s  (%d runs x %lld steps, dt %.3g)\n",
-              bc.id.c_str(), bc.description.c_str(), bc.config.skin, builds_per_kstep, median, rates.front(), rates.back(), runs,
+  std::printf("%-2s %-58s skin %.2f builds/1000 steps %.1f  median %8.3g  min %8.3g  max %8.3g %s-steps/s  (%d runs x %lld steps, dt %.3g)\n",
+              bc.id.c_str(), bc.description.c_str(), bc.config.skin, builds_per_kstep, median, rates.front(), rates.back(),
+              bc.config.is_dp() ? "vertex" : "particle", runs,
               static_cast<long long>(bc.steps), warm.time_step().dt);
   std::fflush(stdout);
 }
@@ -85,7 +103,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("bench", "Standard performance cases: particle-steps per second");
   cmd->add_option("--runs", a->runs, "timed runs per case (median and spread)")->check(CLI::Range(1, 100));
-  cmd->add_option("--case", a->cases, "cases to run (a, b, c; default all)");
+  cmd->add_option("--case", a->cases, "cases to run (a, b, c, d, e; default all)");
   cmd->add_option("--scale", a->scale, "multiply the timed steps by this")->check(CLI::PositiveNumber);
   cmd->add_option("--skin", a->skin, "Verlet skin (default: the job default)")->check(CLI::PositiveNumber);
   cmd->callback([a, &exit_status] {

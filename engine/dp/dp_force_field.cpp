@@ -1,5 +1,7 @@
 #include "dp_force_field.h"
 
+#include <sstream>
+
 namespace beverloo {
 
 std::array<double, 2> DpForceField::list_diameters(const DpShape& shape) {
@@ -18,10 +20,12 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       walls_(hopper, list_, c.E_w, {shape.delta[0], shape.delta[1]}),
       gravity_(c.gravity),
       drag_(c.zeta / shape.n_v),
+      corners_(hopper, p, shape, c.E_w),
       hopper_(hopper) {
   list_.set_groups(&p.owner);
-  if (shape.smooth)
+  if (shape.smooth) {
     smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, c.mu);
+  }
   else
     rough_ = std::make_unique<SpContact<2>>(list_, E_c, c.mu);
 }
@@ -43,6 +47,7 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.max_overlap = rough_->max_overlap();
   }
   r.U_wall = walls_.accumulate(s, s.f).energy;
+  r.U_wall += corners_.accumulate(s, s.f).energy;
   r.U_gravity = gravity_.accumulate(s, s.f).energy;
   r.P_drag = drag_.accumulate(s, s.f).power;
   return r;
@@ -61,9 +66,19 @@ void DpForceField::friction_forces(const ParticleState<2>& s, VecArray<2>& out) 
     rough_->friction_forces(s, out);
 }
 
+std::string DpForceField::describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const {
+  if (!smooth_) return "";
+  const auto [vertex, edge] = smooth_->worst_contact();
+  if (vertex < 0) return "";
+  std::ostringstream m;
+  m << " (vertex " << vertex << " of polygon " << p.owner[vertex] << " at " << s.x[vertex].transpose() << " against the edge from vertex "
+    << edge << " of polygon " << p.owner[edge] << ")";
+  return m.str();
+}
+
 std::vector<ForceTerm<2>*> DpForceField::terms() {
   ForceTerm<2>* contact = smooth_ ? static_cast<ForceTerm<2>*>(smooth_.get()) : rough_.get();
-  return {&area_, &segments_, &bending_, contact, &walls_, &gravity_, &drag_};
+  return {&area_, &segments_, &bending_, contact, &walls_, &gravity_, &drag_, &corners_};
 }
 
 }  // namespace beverloo

@@ -6,6 +6,7 @@
 /// gravity, drag zeta/n_v. Same interface as ForceField, so the integrator, FIRE and the
 /// generic physics tests take either.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "../config.h"
@@ -13,6 +14,7 @@
 #include "../forces/dp_bending.h"
 #include "../forces/dp_segment_length.h"
 #include "../forces/dp_smooth_contact.h"
+#include "../forces/dp_wall_corners.h"
 #include "../forces/drag.h"
 #include "../forces/force_field.h"
 #include "../forces/gravity.h"
@@ -37,7 +39,10 @@ class DpForceField {
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
   /// Longest edge at the last evaluation (bounds the smooth contact's reach).
   double longest_edge() const { return segments_.longest_edge(); }
+  /// area, segment length, bending, contact, walls, gravity, drag, wall corners
   std::vector<ForceTerm<2>*> terms();
+  /// Where the largest contact overlap of the last evaluation is (for failure messages).
+  std::string describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const;
 
   /// Vertex "diameters" for the Verlet list: its reach must cover every contact.
   static std::array<double, 2> list_diameters(const DpShape& shape);
@@ -53,6 +58,7 @@ class DpForceField {
   HopperWalls<2> walls_;
   Gravity<2> gravity_;
   Drag<2> drag_;
+  DpWallCorners corners_;
   const Hopper<2>& hopper_;
 };
 

@@ -45,7 +45,10 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     double dU_dd;
     energy += HarmonicOverlap::energy(eps_, d, 1.0 / dmn, dU_dd);
     const double ov = 1.0 - d / dmn;
-    max_ov = ov > max_ov ? ov : max_ov;
+    if (ov > max_ov) {
+      max_ov = ov;
+      worst_ = {b, a};
+    }
     const Vec<2> fb = -dU_dd * dir;  // on the vertex, away from the edge
     f[b] += fb;
     f[a] -= w_start * fb;

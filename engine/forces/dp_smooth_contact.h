@@ -23,6 +23,8 @@
 /// and the list's reach (vertex "diameter" max_edge + delta) covers that. Each list pair (a, b)
 /// evaluates edge a against vertex b and edge b against vertex a, so every edge-vertex pair
 /// is counted exactly once.
+#include <utility>
+
 #include "../dp/polygons.h"
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
@@ -40,6 +42,8 @@ class DpSmoothContact final : public ForceTerm<2> {
   void set_friction_enabled(bool on) { friction_on_ = on; }
   /// Largest relative overlap 1 - d/delta_mn seen in the last accumulate().
   double max_overlap() const { return max_overlap_; }
+  /// The vertex and the edge (its start vertex) of that largest overlap.
+  std::pair<int, int> worst_contact() const { return worst_; }
 
  private:
   enum class Mode { Repulsion, RepulsionAndFriction, FrictionOnly };
@@ -55,6 +59,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   double eps_, mu_;
   bool friction_on_ = true;
   double max_overlap_ = 0;
+  mutable std::pair<int, int> worst_{-1, -1};
 };
 
 }  // namespace beverloo

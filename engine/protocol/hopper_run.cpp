@@ -40,6 +40,12 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       estimator_(c.run),
       pile_finder_(c.N) {
   ff_ = std::make_unique<ForceField<D>>(c_, hopper_);
+  if constexpr (D == 2) {
+    if (c_.is_dp()) {
+      dp_ = std::make_unique<DpSystem>(c_, hopper_);
+      bodies_list_ = std::make_unique<NeighborList<D>>(c_.skin);
+    }
+  }
   rec_.exit_time.reserve(1 << 16);
   rec_.exit_particle.reserve(1 << 16);
   rec_.exit_size.reserve(1 << 16);
@@ -55,12 +61,18 @@ std::string HopperRun<D>::path(const std::string& name) const {
 }
 
 template <int D>
-void HopperRun<D>::prepare() {
-  const bool have_dir = !opt_.output_dir.empty();
-  if (have_dir && opt_.resume && std::filesystem::exists(path("checkpoint.h5"))) {
-    load_checkpoint(path("checkpoint.h5"));
-    ++resumed_times_;
-  } else {
+void HopperRun<D>::place_and_minimize() {
+  FireResult fr;
+  if constexpr (D == 2) {
+    if (dp_) {
+      dp_->place_bodies(s_, rng_);
+      dp_->build_polygons(s_, rng_);
+      set_ceiling();
+      fr = dp_->minimize(c_.fire, ts_.dt);
+      dp_->sync_bodies(s_);
+    }
+  }
+  if (!dp_) {
     place_randomly(s_, c_, hopper_, rng_);
     set_ceiling();
     SimConfig soft = c_;
@@ -68,29 +80,75 @@ void HopperRun<D>::prepare() {
     ForceField<D> minimiser_forces(soft, hopper_);
     minimiser_forces.set_gravity(0);
     minimiser_forces.set_dissipation(false);
-    const FireResult fr = fire_minimize(s_, minimiser_forces, c_.fire, ts_.dt);
-    fire_iterations_ = fr.iterations;
-    fire_max_force_ = fr.max_force;
-    if (!fr.converged) {
-      std::ostringstream m;
-      m << "FIRE did not remove the initial overlaps: max force " << fr.max_force << " > fire.force_tol "
-        << c_.fire.force_tol << " after " << fr.iterations << " iterations";
-      throw InstabilityError(m.str());
-    }
+    fr = fire_minimize(s_, minimiser_forces, c_.fire, ts_.dt);
+  }
+  fire_iterations_ = fr.iterations;
+  fire_max_force_ = fr.max_force;
+  if (!fr.converged) {
+    std::ostringstream m;
+    m << "FIRE did not remove the initial overlaps: max force " << fr.max_force << " > fire.force_tol "
+      << c_.fire.force_tol << " after " << fr.iterations << " iterations";
+    throw InstabilityError(m.str());
+  }
+}
+
+template <int D>
+void HopperRun<D>::prepare() {
+  const bool have_dir = !opt_.output_dir.empty();
+  if (have_dir && opt_.resume && std::filesystem::exists(path("checkpoint.h5"))) {
+    load_checkpoint(path("checkpoint.h5"));
+    ++resumed_times_;
+  } else {
+    place_and_minimize();
     check_containment();
     s_.step = 0;
   }
-  ff_->set_gravity(c_.gravity);
-  ff_->set_dissipation(true);
-  ff_->list().invalidate();
-  // Forces at the start (or the resumed) state: identical to those the uninterrupted run holds,
-  // because the pair sums do not depend on when the list was built (see neighbor_list.h).
-  if (s_.step == 0) ff_->compute(s_);
+  if constexpr (D == 2) {
+    if (dp_) {
+      dp_->verts().step = s_.step;
+      DpForceField& f = dp_->forces();
+      f.set_gravity(c_.gravity);
+      f.set_dissipation(true);
+      f.list().invalidate();
+      bodies_list_->invalidate();
+      // as for SP: the forces of the resumed state equal those of the uninterrupted run
+      if (s_.step == 0) f.compute(dp_->verts());
+    }
+  }
+  if (!dp_) {
+    ff_->set_gravity(c_.gravity);
+    ff_->set_dissipation(true);
+    ff_->list().invalidate();
+    // Forces at the start (or the resumed) state: identical to those the uninterrupted run holds,
+    // because the pair sums do not depend on when the list was built (see neighbor_list.h).
+    if (s_.step == 0) ff_->compute(s_);
+  }
   const double top = set_ceiling();
   if (have_dir && c_.run.trajectory_every_steps > 0)
     traj_.reset(new Trajectory{H5mdTrajectory<D>(path("trajectory.h5"), c_, s_, top, resumed_times_ ? s_.step : -1)});
   session_start_ = last_progress_ = std::chrono::steady_clock::now();
   session_first_step_ = s_.step;
+}
+
+template <int D>
+void HopperRun<D>::copy_state_from(const HopperRun& other) {
+  s_ = other.s_;
+  if constexpr (D == 2) {
+    if (dp_) {
+      dp_->verts() = other.dp_->verts();
+      dp_->forces().list().invalidate();
+      bodies_list_->invalidate();
+    }
+  }
+  ff_->list().invalidate();
+}
+
+template <int D>
+std::int64_t HopperRun<D>::neighbor_builds() {
+  if constexpr (D == 2) {
+    if (dp_) return dp_->forces().list().builds();
+  }
+  return ff_->list().builds();
 }
 
 template <int D>
@@ -102,20 +160,28 @@ double HopperRun<D>::set_ceiling() {
 }
 
 template <int D>
+void HopperRun<D>::reinject_exited(NeighborList<D>& list) {
+  list.update(s_, hopper_);  // a list valid for these positions: a canonical pile
+  pile_finder_.find(s_, list, hopper_, in_pile_);
+  for (int i : exits_.to_reinject()) {
+    ++rec_.reinjections;
+    const bool touched = reinjector_.reinject(s_, i, rng_, in_pile_);
+    if (!touched) ++rec_.reinjection_fallbacks;
+    list.relocate(i, s_, hopper_);
+    in_pile_[i] = touched;  // resting on the pile; a fallback particle is still in the air
+    if constexpr (D == 2) {
+      if (dp_) dp_->reinject(i, s_.x[i], s_.v[i], rng_.uniform(0, 2 * units::pi));
+    }
+  }
+}
+
+template <int D>
 void HopperRun<D>::step_once() {
+  if (dp_) return step_once_dp();
   const double t_next = (s_.step + 1) * ts_.dt;
   const StepReport r = velocity_verlet_step(s_, *ff_, ts_.dt, [&](ParticleState<D>& st) {
     exits_.update(st, t_next, rec_);
-    if (!c_.reinject || exits_.to_reinject().empty()) return;
-    ff_->list().update(st, hopper_);  // a list valid for these positions: a canonical pile
-    pile_finder_.find(st, ff_->list(), hopper_, in_pile_);
-    for (int i : exits_.to_reinject()) {
-      ++rec_.reinjections;
-      const bool touched = reinjector_.reinject(st, i, rng_, in_pile_);
-      if (!touched) ++rec_.reinjection_fallbacks;
-      ff_->list().relocate(i, st, hopper_);
-      in_pile_[i] = touched;  // resting on the pile; a fallback particle is still in the air
-    }
+    if (c_.reinject && !exits_.to_reinject().empty()) reinject_exited(ff_->list());
   });
   if (!r.finite) throw InstabilityError("NaN or infinite position/velocity at t = " + std::to_string(time()));
   if (r.forces.max_overlap > c_.max_overlap)
@@ -125,7 +191,30 @@ void HopperRun<D>::step_once() {
 }
 
 template <int D>
+void HopperRun<D>::step_once_dp() {
+  if constexpr (D == 2) {
+    const double t_next = (s_.step + 1) * ts_.dt;
+    const StepReport r = velocity_verlet_step(dp_->verts(), dp_->forces(), ts_.dt, [&](ParticleState<2>&) {
+      dp_->sync_bodies(s_);  // exits are counted when the centroid crosses the orifice
+      exits_.update(s_, t_next, rec_);
+      if (c_.reinject && !exits_.to_reinject().empty()) reinject_exited(*bodies_list_);
+    });
+    s_.step = dp_->verts().step;
+    dp_->sync_bodies(s_);
+    if (!r.finite) throw InstabilityError("NaN or infinite vertex position/velocity at t = " + std::to_string(time()));
+    if (r.forces.max_overlap > c_.max_overlap)
+      throw InstabilityError("contact overlap 1 - d/delta = " + std::to_string(r.forces.max_overlap) +
+                             " beyond max_overlap = " + std::to_string(c_.max_overlap) + " at t = " + std::to_string(time()) +
+                             dp_->forces().describe_worst_contact(dp_->verts(), dp_->polygons()));
+    rec_.max_overlap_seen = std::max(rec_.max_overlap_seen, r.forces.max_overlap);
+  }
+}
+
+template <int D>
 void HopperRun<D>::check_containment() const {
+  if constexpr (D == 2) {
+    if (dp_) dp_->check_vertices(s_, time());
+  }
   for (int i = 0; i < s_.size(); ++i) {
     if (!hopper_.contains(s_.x[i]) || s_.x[i][kUp<D>] > ceiling_ ||
         s_.x[i][kUp<D>] < -(c_.reinjection.drop_depth_diameters + 10) * s_.sigma(i)) {
@@ -159,7 +248,10 @@ RunResult HopperRun<D>::run() {
     const std::int64_t step = s_.step;
     const double t = time();
     if (step % sample_steps == 0) {
-      ff_->contact().friction_forces(s_, friction_scratch_);
+      if constexpr (D == 2) {
+        if (dp_) dp_->body_friction(friction_scratch_);
+      }
+      if (!dp_) ff_->contact().friction_forces(s_, friction_scratch_);
       obs_.sample(s_, t, friction_scratch_, c_.zeta);
     }
     if (traj_ && step % traj_steps == 0) traj_->writer.write_frame(s_, t);
@@ -263,7 +355,7 @@ RunResult HopperRun<D>::finish(const std::string& status, const std::string& rea
   const double session = std::chrono::duration<double>(std::chrono::steady_clock::now() - session_start_).count();
   r.wall_seconds = wall_seconds_before_ + session;
   r.particle_steps_per_second = session > 0 ? (s_.step - session_first_step_) * double(s_.size()) / session : 0;
-  r.neighbor_builds = ff_->list().builds();
+  r.neighbor_builds = neighbor_builds();
   r.resumed_times = resumed_times_;
   report_progress(e, true);
   if (opt_.progress == ProgressMode::Terminal) std::fputc('\n', stderr);

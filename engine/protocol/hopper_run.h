@@ -14,6 +14,7 @@
 #include <string>
 
 #include "../config.h"
+#include "../dp/dp_system.h"
 #include "../forces/force_field.h"
 #include "../geometry/hopper.h"
 #include "../integrate/time_step.h"
@@ -50,8 +51,18 @@ class HopperRun {
   /// Advances the flow by exactly `steps` steps without the stopping rules (benchmarks, tests).
   void advance(std::int64_t steps);
 
+  /// Per-particle state: SP particles, or the DP polygons' centroids (bodies).
   ParticleState<D>& state() { return s_; }
+  /// The SP force field (not used by DP runs).
   ForceField<D>& forces() { return *ff_; }
+  /// The vertex half of a DP run; nullptr for SP.
+  DpSystem* dp() { return dp_.get(); }
+  /// Continue from another run's state (benchmarks: every timed run from one warmed state).
+  void copy_state_from(const HopperRun& other);
+  /// Verlet-list builds so far (vertex list for DP).
+  std::int64_t neighbor_builds();
+  /// Degrees of freedom advanced per step: particles (SP) or vertices (DP).
+  std::int64_t moving_points() const { return dp_ ? dp_->verts().size() : s_.size(); }
   const Hopper<D>& hopper() const { return hopper_; }
   const FlowRecord& record() const { return rec_; }
   const TimeStepChoice& time_step() const { return ts_; }
@@ -62,6 +73,11 @@ class HopperRun {
 
  private:
   void step_once();
+  void step_once_dp();
+  /// The reinjection of the exited particles listed by exits_ (list: over the particles, or
+  /// over the DP bodies), between drift and force evaluation.
+  void reinject_exited(NeighborList<D>& list);
+  void place_and_minimize();
   void check_containment() const;
   /// Height above which a particle counts as escaped upward; returns the current top.
   double set_ceiling();
@@ -75,6 +91,10 @@ class HopperRun {
   Hopper<D> hopper_;
   ParticleState<D> s_;
   std::unique_ptr<ForceField<D>> ff_;
+  /// DP only (2D): vertices, polygons and their forces; bodies_list_ links the bodies for the
+  /// pile finder (the SP list plays that part for SP).
+  std::unique_ptr<DpSystem> dp_;
+  std::unique_ptr<NeighborList<D>> bodies_list_;
   Rng rng_;
   FlowRecord rec_;
   ExitCounter<D> exits_;

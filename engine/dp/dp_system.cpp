@@ -1,0 +1,116 @@
+#include "dp_system.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "../protocol/exit_counter.h"
+#include "../units.h"
+
+namespace beverloo {
+
+DpSystem::DpSystem(const SimConfig& c, const Hopper<2>& hopper)
+    : c_(c), hopper_(hopper), shape_(DpShape::from_config(c)), poly_(PolygonSet::uniform(c.N, c.dp.n_v)) {
+  const auto diam = DpForceField::list_diameters(shape_);
+  verts_.sp.sigma = {diam[0], diam[1]};
+  verts_.sp.mass = {shape_.vertex_mass[0], shape_.vertex_mass[1]};
+  verts_.sp.ref_size = {shape_.a0[0], shape_.a0[1]};
+  verts_.resize(poly_.vertices());
+  ff_ = std::make_unique<DpForceField>(c_, hopper_, poly_, shape_, c_.dp.E_c);
+}
+
+Species DpSystem::body_species() const {
+  Species sp = Species::bidisperse(2, c_.size_ratio);
+  for (int k = 0; k < 2; ++k) sp.sigma[k] = kBodyMargin * shape_.bounding_diameter(k);
+  return sp;
+}
+
+void DpSystem::place_bodies(ParticleState<2>& bodies, Rng& rng) const {
+  bodies.sp = body_species();
+  bodies.resize(c_.N);
+  std::vector<std::uint8_t> species(c_.N);
+  for (int i = 0; i < c_.N; ++i) species[i] = i < c_.N / 2 ? 0 : 1;
+  for (int i = c_.N - 1; i > 0; --i) {  // Fisher-Yates with our own generator (portable)
+    const int j = static_cast<int>(rng.uniform() * (i + 1));
+    std::swap(species[i], species[std::min(j, i)]);
+  }
+  const double spacing = bodies.sp.sigma[1] * 1.02, row = spacing * std::sqrt(3.0) / 2;
+  const double half = hopper_.half_width() - 0.5 * spacing;
+  // rows alternate by half a spacing; the shifted rows must fit too
+  const int per_row = std::max(1, static_cast<int>(2 * half / spacing - 0.5) + 1);
+  const double bottom = hopper_.funnel_top() + 0.5 * spacing;
+  const double jitter = 0.01 * spacing;
+  for (int i = 0; i < c_.N; ++i) {
+    const int r = i / per_row, k = i % per_row;
+    const double x = -half + k * spacing + (r % 2 ? 0.5 * spacing : 0.0);
+    bodies.x[i] = Vec<2>(x + jitter * rng.uniform(-1, 1), bottom + r * row + jitter * rng.uniform(-1, 1));
+    bodies.species[i] = species[i];
+    bodies.inv_mass[i] = 1.0 / bodies.sp.mass[species[i]];
+  }
+}
+
+void DpSystem::build_polygons(const ParticleState<2>& bodies, Rng& rng) {
+  for (int m = 0; m < c_.N; ++m) {
+    for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) {
+      verts_.species[i] = bodies.species[m];
+      verts_.inv_mass[i] = 1.0 / shape_.vertex_mass[bodies.species[m]];
+    }
+    place_regular_polygon(poly_, shape_, verts_, m, bodies.x[m], rng.uniform(0, 2 * units::pi), Vec<2>::Zero());
+  }
+  verts_.exited.assign(verts_.size(), 0);
+}
+
+FireResult DpSystem::minimize(const FireParams& p, double dt) {
+  DpForceField soft(c_, hopper_, poly_, shape_, std::min(c_.dp.E_c, p.max_pair_stiffness));
+  soft.set_gravity(0);
+  soft.set_dissipation(false);
+  return fire_minimize(verts_, soft, p, dt);
+}
+
+void DpSystem::sync_bodies(ParticleState<2>& bodies) const {
+  const double inv_nv = 1.0 / c_.dp.n_v;
+  for (int m = 0; m < c_.N; ++m) {
+    Vec<2> x = Vec<2>::Zero(), v = Vec<2>::Zero();
+    for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) {
+      x += verts_.x[i];
+      v += verts_.v[i];
+    }
+    bodies.x[m] = x * inv_nv;
+    bodies.v[m] = v * inv_nv;
+  }
+}
+
+void DpSystem::reinject(int m, const Vec<2>& centre, const Vec<2>& velocity, double angle) {
+  place_regular_polygon(poly_, shape_, verts_, m, centre, angle, velocity);
+  for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) ff_->list().relocate(i, verts_, hopper_);
+}
+
+void DpSystem::body_friction(VecArray<2>& out) {
+  ff_->friction_forces(verts_, vertex_scratch_);
+  out.assign(c_.N, Vec<2>::Zero());
+  for (int i = 0; i < verts_.size(); ++i) out[poly_.owner[i]] += vertex_scratch_[i];
+}
+
+void DpSystem::check_vertices(const ParticleState<2>& bodies, double t) const {
+  if (shape_.smooth && ff_->longest_edge() > shape_.max_edge) {
+    std::ostringstream m;
+    m << "a polygon edge stretched to " << ff_->longest_edge() << " (more than " << shape_.max_edge
+      << " = 2 l0 of the large species, the reach of the contact search) at t = " << t;
+    throw InstabilityError(m.str());
+  }
+  // A vertex may wrap around an orifice corner by its contact radius; one a whole edge
+  // under the floor while its polygon has not exited went through the wall.
+  const double half_w = hopper_.orifice_half_width() + shape_.l0[1];
+  for (int i = 0; i < verts_.size(); ++i) {
+    const Vec<2>& x = verts_.x[i];
+    const int m = poly_.owner[i];
+    if (!hopper_.contains(x) || (!bodies.exited[m] && x[1] < 0 && std::fabs(x[0]) > half_w)) {
+      std::ostringstream msg;
+      msg << "vertex " << i << " of polygon " << m << " went through a wall at t = " << t << " (position "
+          << x.transpose() << ")";
+      throw InstabilityError(msg.str());
+    }
+  }
+}
+
+}  // namespace beverloo

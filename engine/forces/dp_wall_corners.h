@@ -1,0 +1,68 @@
+#pragma once
+/// \file dp_wall_corners.h
+/// \brief The orifice corners against polygon edges (both DP variants).
+///
+/// Walls act on vertices (physics.md 4), which is enough for flat walls: a polygon cannot
+/// cross a flat wall without one of its vertices crossing it. A convex wall corner (the two
+/// orifice edges) is a point, and it can slip between two vertices of a smooth polygon, whose
+/// edges are thin circulo-lines (width 0.1 l0): seen as polygons impaled on the corner and
+/// pulled under the floor. So each corner also repels every edge whose slab it lies in, with
+/// the wall's form U = (E_w/2)(1 - 2 d/delta_m)^2 for the perpendicular distance d < delta_m/2,
+/// the force on the edge split between its end vertices by the lever rule. The edge's width
+/// is the smooth model's 0.1 l0 in both variants: rough polygons' vertex disks (diameter l0)
+/// close the gaps while edges keep their length, but a stretched edge of a soft rough polygon
+/// opens one (seen: K_l = 1), and this thin core only acts once the corner is that deep.
+#include <array>
+#include <cmath>
+
+#include "../dp/polygons.h"
+#include "../geometry/hopper.h"
+#include "force_term.h"
+#include "harmonic_overlap.h"
+
+namespace beverloo {
+
+class DpWallCorners final : public ForceTerm<2> {
+ public:
+  DpWallCorners(const Hopper<2>& hopper, const PolygonSet& p, const DpShape& shape, double E_w)
+      : p_(p), shape_(shape), eps_(E_w) {
+    const double half = hopper.orifice_half_width();
+    corners_ = {Vec<2>(-half, 0.0), Vec<2>(half, 0.0)};
+  }
+  std::string_view name() const override { return "dp_wall_corners"; }
+  TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
+    double energy = 0;
+    const double reach = shape_.max_edge + shape_.delta[1];
+    const int nv = p_.vertices();
+    for (int i = 0; i < nv; ++i) {
+      for (const Vec<2>& c : corners_) {
+        const Vec<2> q = c - s.x[i];
+        if (q.squaredNorm() >= reach * reach) continue;
+        const int j = p_.next[i];
+        const Vec<2> e = s.x[j] - s.x[i];
+        const double e2 = e.squaredNorm();
+        const double t = q.dot(e) / e2;
+        if (t < 0 || t > 1) continue;  // beyond the ends: the vertices' own wall contact
+        const double half_delta = 0.05 * shape_.l0[s.species[i]];
+        const double len = std::sqrt(e2);
+        const Vec<2> n(e[1] / len, -e[0] / len);  // outward normal
+        const double d = q.dot(n);                 // corner outside the polygon: d > 0
+        if (d >= half_delta || d <= -half_delta) continue;
+        double dU_dd;
+        energy += HarmonicOverlap::energy(eps_, d, 1.0 / half_delta, dU_dd);
+        // dd/dr_i = -(1 - t) n, dd/dr_j = -t n (the corner is fixed)
+        f[i] += (dU_dd * (1 - t)) * n;
+        f[j] += (dU_dd * t) * n;
+      }
+    }
+    return {energy, 0};
+  }
+
+ private:
+  const PolygonSet& p_;
+  const DpShape& shape_;
+  double eps_;
+  std::array<Vec<2>, 2> corners_;
+};
+
+}  // namespace beverloo

@@ -1,0 +1,160 @@
+// The DP model in motion (physics.md 4-6): energy conservation without dissipation at O(dt^2),
+// area conservation and simple polygons in flowing runs, reinjection of whole polygons, and an
+// unstable run that stops with a reason.
+#include <gtest/gtest.h>
+
+#include "dp_support.h"
+#include "engine/integrate/time_step.h"
+#include "engine/integrate/velocity_verlet.h"
+#include "engine/protocol/hopper_run.h"
+
+namespace beverloo {
+namespace {
+using testing::DpFixture;
+using testing::dp_config;
+
+/// Max |E(t) - E(0)| over a short run of colliding, vibrating polygons under gravity.
+double energy_error(const std::string& model, double dt_fraction) {
+  SimConfig c = dp_config(model, 6);
+  c.dp.E_c = 1e2;
+  c.E_w = 1e2;
+  c.resolve_and_validate();
+  const double dt = choose_time_step(c).dt * dt_fraction;
+  // two pairs about to collide, deformed (so the shapes vibrate), one polygon on the floor
+  DpFixture fx(c, {{-3.0, 3.0}, {-1.75, 3.0}, {0.0, 5.0}, {0.0, 6.25}, {3.5, 0.6}, {3.5, 2.5}}, 0.0, 17);
+  testing::random_velocities(fx.verts, 18, 0.1);
+  for (int m : {0, 1, 2, 3}) {
+    const Vec<2> v = m == 0 ? Vec<2>(1, 0) : m == 1 ? Vec<2>(-1, 0) : m == 2 ? Vec<2>(0, 1) : Vec<2>(0, -1);
+    for (int i = fx.poly.first[m]; i < fx.poly.first[m + 1]; ++i) fx.verts.v[i] += v;
+  }
+  const Hopper<2> h = make_hopper<2>(c);
+  DpForceField ff(c, h, fx.poly, fx.shape, c.dp.E_c);
+  auto total = [&](const ForceReport& r) { return r.potential() + fx.verts.kinetic_energy(); };
+  const double e0 = total(ff.compute(fx.verts));
+  double worst = 0;
+  const int steps = static_cast<int>(std::lround(0.4 / dt));
+  bool touched = false;
+  for (int k = 0; k < steps; ++k) {
+    const StepReport r = velocity_verlet_step(fx.verts, ff, dt);
+    touched = touched || r.forces.U_contact > 0;
+    worst = std::max(worst, std::fabs(total(r.forces) - e0));
+  }
+  EXPECT_TRUE(touched) << model << ": the test must exercise contacts";
+  return worst;
+}
+
+TEST(DpDynamics, EnergyIsConservedWithoutDissipation) {
+  // Total energy ~20 (mostly gravity); collisions exchange ~1 of kinetic and contact energy
+  // and excite shape vibrations. The error at the automatic dt stays below 5e-5 of it and
+  // falls with dt (the cut-off of the contacts makes the order less clean than the SP test's).
+  for (const char* model : {"dp_smooth", "dp_rough"}) {
+    const double coarse = energy_error(model, 1.0), fine = energy_error(model, 0.5);
+    EXPECT_LT(coarse, 1e-3) << model << " coarse " << coarse << " fine " << fine;
+    EXPECT_LT(fine, 0.8 * coarse) << model << " coarse " << coarse << " fine " << fine;
+  }
+}
+
+SimConfig flowing_dp(const std::string& model, double K_l, double K_b) {
+  SimConfig c = dp_config(model, 90, /*zeta=*/1 / std::sqrt(10.0), 0);
+  c.W = 9;
+  c.w = 3.5;
+  c.dp.K_l = K_l;
+  c.dp.K_b = K_b;
+  c.dp.E_c = 1e2;
+  c.E_w = 1e2;
+  c.resolve_and_validate();
+  return c;
+}
+
+/// Median and largest relative area deviation |a/a0 - 1| over samples of a flowing run.
+struct AreaDeviation {
+  double median = 0, worst = 0;
+  std::int64_t reinjections = 0;
+};
+AreaDeviation flowing_area_deviation(double K_a) {
+  SimConfig c = flowing_dp("dp_smooth", 10, 0.1);
+  c.dp.K_a = K_a;
+  c.resolve_and_validate();
+  HopperRun<2> run(c, RunOptions{});
+  run.prepare();
+  const DpSystem& dp = *run.dp();
+  std::vector<double> devs;
+  AreaDeviation out;
+  for (int chunk = 0; chunk < 30; ++chunk) {
+    run.advance(3000);
+    if (chunk < 10) continue;  // the initial column's landing
+    for (int m = 0; m < c.N; ++m) {
+      const double a0 = dp.shape().a0[run.state().species[m]];
+      devs.push_back(std::fabs(polygon_area(dp.polygons(), dp.verts().x, m) / a0 - 1));
+    }
+    // bodies are the centroids of their polygons
+    for (int m = 0; m < c.N; ++m)
+      EXPECT_LT((run.state().x[m] - polygon_centroid(dp.polygons(), dp.verts().x, m)).norm(), 1e-12);
+  }
+  std::sort(devs.begin(), devs.end());
+  out.median = devs[devs.size() / 2];
+  out.worst = devs.back();
+  out.reinjections = run.record().reinjections;
+  return out;
+}
+
+TEST(DpDynamics, FlowingRunConservesAreasAsTheAreaStiffnessDemands) {
+  // The area term yields like a 2D pressure: a - a0 = -Pi/K_a, and under the pile's weight
+  // Pi ~ rho g h ~ 5 here, so K_a = 1e4 gives ~1e-3 (hydrostatics, not an error), and ten
+  // times K_a gives ten times less; impacts (energy-limited) give sqrt(10) times less. Measured
+  // (N = 90, t = 2.5-7.5): median 2.8e-4 (K_a = 1e4) and 7.8e-5 (1e5); worst 2e-3 at 1e5.
+  const AreaDeviation soft = flowing_area_deviation(1e4), stiff = flowing_area_deviation(1e5);
+  EXPECT_GT(soft.reinjections, 10) << "the run must flow";
+  EXPECT_LT(soft.median, 2e-3);
+  // quasi-static loads scale as 1/K_a, impacts (energy-limited) as 1/sqrt(K_a): between
+  EXPECT_GT(soft.median / stiff.median, 2.5) << soft.median << " vs " << stiff.median;
+  EXPECT_LT(stiff.worst, soft.worst);
+}
+
+void check_softest_polygons_stay_simple(const char* model) {
+  SimConfig c = flowing_dp(model, 1, 1e-2);
+  c.dp.E_c = c.E_w = 1e3;
+  c.resolve_and_validate();
+  HopperRun<2> run(c, RunOptions{});
+  run.prepare();
+  const DpSystem& dp = *run.dp();
+  int not_simple = 0;
+  const std::int64_t chunk_steps = std::llround(0.2 / run.time_step().dt);
+  for (int chunk = 0; chunk < 35; ++chunk) {
+    run.advance(chunk_steps);
+    for (int m = 0; m < c.N; ++m) not_simple += !polygon_is_simple(dp.polygons(), dp.verts().x, m);
+  }
+  EXPECT_GT(run.record().reinjections, 10) << model;
+  EXPECT_EQ(not_simple, 0) << model;
+}
+
+// Known open problems (issue 3 notes), enabled again once fixed:
+//  - rough, K_l = 1, K_b = 1e-2: 12 polygon samples of 35 x 90 self-intersect; the model has no
+//    contact between non-adjacent vertices of one polygon, and this bending is too weak to
+//    keep a polygon from folding over itself;
+//  - smooth, same settings: a polygon wrapped around an orifice corner lets a neighbour's
+//    vertex through its edge (overlap jumps to ~2 at the corner at t ~ 4-5), also at
+//    E_c = E_w = 1e3.
+TEST(DpDynamics, DISABLED_SoftestRoughPolygonsStaySimpleWhileFlowing) { check_softest_polygons_stay_simple("dp_rough"); }
+
+TEST(DpDynamics, DISABLED_SoftestSmoothPolygonsStaySimpleWhileFlowing) {
+  check_softest_polygons_stay_simple("dp_smooth");
+}
+
+TEST(DpDynamics, CrushedContactsStopTheRunWithAReason) {
+  SimConfig c = flowing_dp("dp_smooth", 10, 0.1);
+  c.dp.E_c = 1e-3;  // far too soft to hold the polygons' weight
+  c.resolve_and_validate();
+  HopperRun<2> run(c, RunOptions{});
+  run.prepare();
+  try {
+    run.advance(400000);
+    FAIL() << "the run should have stopped";
+  } catch (const InstabilityError& e) {
+    const std::string what = e.what();
+    EXPECT_TRUE(what.find("overlap") != std::string::npos || what.find("wall") != std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace beverloo

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "sweep.h"
 
 #include "engine/integrate/time_step.h"
@@ -27,7 +28,8 @@ const std::set<std::string>& sweepable() {
       "model", "dimension", "N", "size_ratio", "W", "w", "theta_w_deg", "theta_w_left_deg", "theta_w_right_deg",
       "E_sp", "E_w", "zeta", "mu", "gravity", "dt", "skin", "max_overlap", "initial_packing_fraction", "reinject",
       "seed", "replica", "lambda", "dissipation_scale", "run.t_max", "run.target_rel_err", "run.t_clog",
-      "run.min_transient", "run.min_window", "run.check_interval", "run.rate_bin"};
+      "run.min_transient", "run.min_window", "run.check_interval", "run.rate_bin",
+      "dp.n_v", "dp.K_a", "dp.K_l", "dp.K_b", "dp.E_c"};
   return names;
 }
 std::string known_list() {
@@ -178,9 +180,12 @@ double evaluate(const std::string& expr, const Point& point, const std::string& 
   mu::Parser parser;
   std::map<std::string, double> vars;
   for (const auto& [name, t] : point) {
-    if (name.find('.') != std::string::npos) continue;
+    if (name.rfind("run.", 0) == 0) continue;
+    // a dotted parameter is a variable with an underscore: dp.E_c -> dp_E_c
+    std::string var = name;
+    std::replace(var.begin(), var.end(), '.', '_');
     if (t.value.is_number() || t.value.is_boolean() || (t.value.is_string() && t.value.get<std::string>() == "inf"))
-      vars[name] = as_number(t, name);
+      vars[var] = as_number(t, name);
   }
   try {
     for (auto& [name, v] : vars) parser.DefineVar(name, &v);

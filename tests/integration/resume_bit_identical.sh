@@ -1,12 +1,21 @@
 #!/usr/bin/env bash
 # SIGKILL at arbitrary moments, then --resume until done: the result equals, bit for bit, a
 # run that was never interrupted. Also SIGTERM: checkpoint, exit 5, resume, same result.
+# With the argument "dp": the same for a smooth DP job (the vertices are the checkpointed state).
 source "$(dirname "$0")/lib.sh"
+if [ "${1:-sp}" = dp ]; then
+cat > "$WORK/job.json" <<'JOB'
+{"model": "dp_smooth", "N": 60, "W": 8, "w": 3, "E_w": 100, "dp": {"E_c": 100}, "zeta": 0.3, "mu": 1.0,
+ "run": {"t_max": 6, "target_rel_err": 1e-9, "min_window": 2, "min_transient": 1, "rate_bin": 0.2,
+         "check_interval": 0.5, "checkpoint_interval": 0.3, "trajectory_every_steps": 5000}}
+JOB
+else
 cat > "$WORK/job.json" <<'JOB'
 {"dimension": 2, "N": 400, "W": 16, "w": 5, "E_sp": 100, "zeta": 0.3, "mu": 1.0,
  "run": {"t_max": 150, "target_rel_err": 1e-9, "min_window": 20, "checkpoint_interval": 3,
          "trajectory_every_steps": 5000}}
 JOB
+fi
 start=$(date +%s.%N)
 "$BIN" simulate "$WORK/job.json" -o "$WORK/clean" --progress quiet > /dev/null
 took=$(echo "$(date +%s.%N) - $start" | bc)

@@ -74,7 +74,7 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
       edge_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
     }
   }
-  if constexpr (kMode != Mode::FrictionOnly) const_cast<DpSmoothContact*>(this)->max_overlap_ = max_ov;
+  if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;
   return {energy, power};
 }
 

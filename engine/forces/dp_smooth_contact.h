@@ -58,7 +58,8 @@ class DpSmoothContact final : public ForceTerm<2> {
   const DpShape& shape_;
   double eps_, mu_;
   bool friction_on_ = true;
-  double max_overlap_ = 0;
+  // written by the evaluation loop, which friction_forces() (const) shares
+  mutable double max_overlap_ = 0;
   mutable std::pair<int, int> worst_{-1, -1};
 };
 

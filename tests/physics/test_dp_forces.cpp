@@ -161,7 +161,9 @@ TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
     EXPECT_NEAR(total, brute_force_smooth_energy(fx, c.dp.E_c), 1e-9 * expected) << "step " << k;
     const double on_polygon0 = brute_force_smooth_energy(fx, c.dp.E_c, /*edges_of=*/0);
     EXPECT_NEAR(on_polygon0, expected, 1e-9 * expected) << "step " << k;
-    if (previous >= 0) EXPECT_LT(std::fabs(total - previous), 0.25 * expected) << "jump at step " << k;  // a double count would jump by 1
+    if (previous >= 0) {  // a double count would jump by `expected`
+      EXPECT_LT(std::fabs(total - previous), 0.25 * expected) << "jump at step " << k;
+    }
     previous = total;
   }
 }

@@ -261,6 +261,7 @@ RunResult HopperRun<D>::run() {
       return finish("clogged", "no particle exited for t_clog = " + std::to_string(c_.run.t_clog), est);
     }
     if (step % check_steps == 0) {
+      if (opt_.progress_step) opt_.progress_step->store(step, std::memory_order_relaxed);
       est = estimator_.estimate(rec_, t);
       report_progress(est, false);
       if (est.valid && est.t_end - est.t_start >= c_.run.min_window && est.rel_err() <= c_.run.target_rel_err)

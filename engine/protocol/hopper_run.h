@@ -36,6 +36,9 @@ struct RunOptions {
   ProgressMode progress = ProgressMode::Quiet;
   /// Set asynchronously (signal handler): checkpoint at the end of the current step and stop.
   const std::atomic<bool>* stop_request = nullptr;
+  /// If set, receives the current step now and then (a few times per simulated time unit), so that
+  /// another thread can report progress (the worker's heartbeat file) without touching the run.
+  std::atomic<std::int64_t>* progress_step = nullptr;
 };
 
 template <int D>

@@ -11,12 +11,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <thread>
 
 #include "engine/io/h5.h"
 #include "executor.h"
+#include "orchestrator/slurm/slurm_executor.h"
 #include "job_files.h"
 #include "orchestrator/cli/exit_codes.h"
 #include "orchestrator/cli/signals.h"
@@ -95,66 +97,56 @@ class Coordinator {
       : db_(db), store_(db), campaign_(campaign), o_(o), ex_(ex), host_(host_name()) {}
 
   int run(const std::atomic<bool>* stop) {
+    // every attempt left in flight by an earlier coordinator is accounted for before anything new starts
     reconcile();
     const auto start = Clock::now();
-    auto last_adopt_check = start, last_heartbeat = start;
+    auto last_timeout_check = start;
     initial_ = store_.counts(campaign_);
     while (true) {
       if (stop->load()) return shutdown();
-      // fill free worker slots
-      while (ex_.running() < ex_.capacity()) {
+      std::vector<ClaimedJob> batch;  // fill free slots (the Slurm executor submits them as arrays)
+      for (int free = ex_.free_slots(); free > 0; --free) {
         auto job = store_.claim_next(campaign_, ex_.name(), host_);
         if (!job) break;
-        launch(*job);
+        write_spec(*job);
+        batch.push_back(*job);
       }
-      const std::vector<WorkerExit> exits = ex_.reap();
+      if (!batch.empty()) {
+        for (const ClaimedJob& j : batch) live_[j.attempt_id] = {j, Clock::now()};
+        ex_.start(batch);
+      }
+      const std::vector<WorkerExit> exits = ex_.poll();
       for (const WorkerExit& e : exits) finished(e);
-      if (Clock::now() - last_adopt_check > std::chrono::milliseconds(500)) {
-        check_adopted();
+      if (Clock::now() - last_timeout_check > std::chrono::milliseconds(500)) {
         check_timeouts();
-        last_adopt_check = Clock::now();
-      }
-      if (std::chrono::duration<double>(Clock::now() - last_heartbeat).count() > o_.heartbeat_s) {
-        record_heartbeats();
-        last_heartbeat = Clock::now();
+        last_timeout_check = Clock::now();
       }
       const StateCounts c = store_.counts(campaign_);
       progress(c, start, false);
-      if (c.pending == 0 && ex_.running() == 0 && adopted_.empty()) {
+      if (c.pending == 0 && ex_.in_flight() == 0) {
         progress(c, start, true);
         return c.failed > 0 ? exit_code::kJobsFailed : exit_code::kOk;
       }
-      if (exits.empty()) wait_for_event();  // something ended: claim the next job at once
+      if (exits.empty() && batch.empty()) ex_.wait();  // something ended: claim the next job at once
     }
   }
 
  private:
   std::string job_dir(const std::string& dir) const { return (fs::path(o_.dir) / dir).string(); }
 
-  /// Sleeps until a worker exits (SIGCHLD, blocked so that it queues) or 100 ms pass, so that a
-  /// finished job is ingested and the next one started at once rather than on a polling tick.
-  static void wait_for_event() {
-    sigset_t chld;
-    sigemptyset(&chld);
-    sigaddset(&chld, SIGCHLD);
-    const timespec timeout{0, 100'000'000};
-    sigtimedwait(&chld, nullptr, &timeout);
-  }
-
-  void launch(const ClaimedJob& job) {
+  void write_spec(const ClaimedJob& job) {
     const std::string dir = job_dir(job.dir);
     fs::create_directories(dir);
     const nlohmann::json spec = {{"key", job.key},
                                  {"attempt_no", job.attempt_no},
                                  {"token", job.token},
+                                 {"heartbeat_s", o_.heartbeat_s},
                                  {"job", nlohmann::json::parse(job.job_json)}};
     write_text_atomically((fs::path(dir) / job_files::kSpec).string(), spec.dump(2) + "\n");
-    const std::int64_t pid = ex_.start(job, dir);
-    store_.set_attempt_pid(job.attempt_id, pid);
-    live_[job.attempt_id] = {job, Clock::now()};
   }
 
-  /// An attempt has ended (its worker exited, or its lock was released): decide from the files.
+  /// An attempt has ended: decide from its files first (outcome.json with its token), then from
+  /// what the executor saw (the worker's exit status, or the scheduler's verdict).
   void settle(const ClaimedJob& job, const WorkerExit* exit) {
     const std::string dir = job_dir(job.dir);
     const auto outcome = job_files::read_outcome(dir);
@@ -165,23 +157,26 @@ class Coordinator {
       log_event(job, "done", "");
       return;
     }
-    FailureClass cls;
-    int status;
-    std::string message;
-    if (exit) {
+    FailureClass cls = FailureClass::Lost;
+    int status = -1;
+    std::string message = "worker gone without an outcome (killed, or the coordinator died before it started)";
+    const std::optional<FailureClass> verdict = exit ? exit->verdict : std::nullopt;
+    if (ours) {
+      cls = class_of(outcome->failure_class);
+      status = outcome->exit_code;
+      message = outcome->message;
+      // a worker stopped by a signal cannot tell a time limit from a preemption; the scheduler can
+      if (cls == FailureClass::Interrupted && verdict && is_scheduler_stop(*verdict)) {
+        cls = *verdict;
+        message = exit->message + " (" + message + ")";
+      }
+    } else if (verdict) {
+      cls = *verdict;
+      message = exit->message;
+    } else if (exit && exit->have_status) {
       cls = classify(*exit);
       status = exit->signaled ? 128 + exit->code : exit->code;
       message = exit->signaled ? "worker killed by signal " + std::to_string(exit->code) : last_log_line(dir);
-    } else {  // adopted or found dead after a coordinator restart: only the files can tell
-      cls = ours ? FailureClass::Internal : FailureClass::Lost;
-      status = ours ? outcome->exit_code : -1;
-      message = ours ? outcome->message : "worker gone without an outcome (killed, or the coordinator died before it started)";
-      if (ours) {
-        if (outcome->failure_class == "blow_up") cls = FailureClass::BlowUp;
-        else if (outcome->failure_class == "invalid_parameters") cls = FailureClass::InvalidParameters;
-        else if (outcome->failure_class == "io") cls = FailureClass::Io;
-        else if (outcome->failure_class == "interrupted") cls = FailureClass::Interrupted;
-      }
     }
     if (timed_out_.erase(job.attempt_id) && cls == FailureClass::Interrupted) {
       cls = FailureClass::Timeout;
@@ -195,6 +190,18 @@ class Coordinator {
     log_event(job, std::string(to_string(cls)) + " -> " + state, message);
   }
 
+  static FailureClass class_of(const std::string& failure_class) {
+    if (failure_class == "blow_up") return FailureClass::BlowUp;
+    if (failure_class == "invalid_parameters") return FailureClass::InvalidParameters;
+    if (failure_class == "io") return FailureClass::Io;
+    if (failure_class == "interrupted") return FailureClass::Interrupted;
+    return FailureClass::Internal;
+  }
+  static bool is_scheduler_stop(FailureClass c) {
+    return c == FailureClass::Timeout || c == FailureClass::Preempted || c == FailureClass::NodeFailure ||
+           c == FailureClass::Cancelled || c == FailureClass::Stalled;
+  }
+
   void finished(const WorkerExit& e) {
     auto it = live_.find(e.attempt_id);
     if (it == live_.end()) return;
@@ -203,39 +210,23 @@ class Coordinator {
     settle(job, &e);
   }
 
-  /// Attempts that an earlier coordinator left running: adopt live workers, settle dead ones.
+  /// Attempts that an earlier coordinator left running: the executor adopts the live ones (and
+  /// reports them when they end); the dead ones are settled from their files now.
   void reconcile() {
     for (const RunningAttempt& a : store_.running_attempts()) {
+      if (a.executor != ex_.name())
+        throw CampaignBusy("attempt " + std::to_string(a.attempt_id) + " of this campaign is still in flight on the '" +
+                           a.executor + "' executor; run with --executor " + a.executor + " until it has been collected");
       ClaimedJob job;
       job.key = a.key;
       job.dir = a.dir;
       job.token = a.token;
       job.attempt_id = a.attempt_id;
-      if (job_files::lock_is_held(job_dir(a.dir)))
-        adopted_[a.attempt_id] = job;
+      if (ex_.adopt(a))
+        live_[a.attempt_id] = {job, Clock::now()};
       else
         settle(job, nullptr);
     }
-  }
-
-  void check_adopted() {
-    for (auto it = adopted_.begin(); it != adopted_.end();) {
-      if (job_files::lock_is_held(job_dir(it->second.dir))) {
-        ++it;
-        continue;
-      }
-      const ClaimedJob job = it->second;
-      it = adopted_.erase(it);
-      settle(job, nullptr);
-    }
-  }
-
-  /// attempts.heartbeat_at: when each worker was last seen alive (holding its job's lock).
-  void record_heartbeats() {
-    for (const auto& [id, l] : live_)
-      if (job_files::lock_is_held(job_dir(l.job.dir))) store_.heartbeat(id);
-    for (const auto& [id, job] : adopted_)
-      if (job_files::lock_is_held(job_dir(job.dir))) store_.heartbeat(id);
   }
 
   void check_timeouts() {
@@ -248,7 +239,9 @@ class Coordinator {
   }
 
   int shutdown() {
-    std::fprintf(stderr, "\n[beverloo] stopping: workers checkpoint and stop\n");
+    std::fprintf(stderr, "\n[beverloo] stopping: %s\n",
+                 ex_.name() == "local" ? "workers checkpoint and stop"
+                                       : "Slurm tasks keep running; run the same command again to collect them");
     for (const WorkerExit& e : ex_.stop_all()) finished(e);
     return exit_code::kInterrupted;
   }
@@ -291,8 +284,7 @@ class Coordinator {
   CampaignOptions o_;
   Executor& ex_;
   std::string host_;
-  std::map<std::int64_t, Live> live_;
-  std::map<std::int64_t, ClaimedJob> adopted_;
+  std::map<std::int64_t, Live> live_;  // started or adopted, not yet settled
   std::set<std::int64_t> timed_out_;  // attempts stopped for exceeding --job-timeout
   std::map<std::string, int> infra_failures_;
   StateCounts initial_;
@@ -325,8 +317,12 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
   sigemptyset(&chld);
   sigaddset(&chld, SIGCHLD);
   sigprocmask(SIG_BLOCK, &chld, nullptr);
-  LocalExecutor ex(o.workers);
-  Coordinator c(db, campaign, o, ex);
+  std::unique_ptr<Executor> ex;
+  if (o.executor == "slurm")
+    ex = std::make_unique<SlurmExecutor>(store, fs::absolute(o.dir).lexically_normal().string(), o.slurm);
+  else
+    ex = std::make_unique<LocalExecutor>(store, o.dir, o.workers, o.heartbeat_s);
+  Coordinator c(db, campaign, o, *ex);
   return c.run(stop);
 }
 

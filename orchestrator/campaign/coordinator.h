@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine/protocol/hopper_run.h"
+#include "orchestrator/slurm/slurm_options.h"
 
 namespace beverloo {
 
@@ -19,6 +20,8 @@ struct CampaignOptions {
   double job_timeout_s = 0;  ///< wall seconds per attempt (0: none); then SIGTERM, checkpoint, resume later
   double heartbeat_s = 30;   ///< how often attempts.heartbeat_at is refreshed for live workers
   ProgressMode progress = ProgressMode::Auto;
+  std::string executor = "local";  ///< local | slurm
+  SlurmOptions slurm;              ///< the slurm executor's settings
 };
 
 /// `beverloo run`: creates or reopens the campaign of sweep_path (if given) and runs every job

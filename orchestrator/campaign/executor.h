@@ -1,9 +1,12 @@
 #pragma once
 /// \file executor.h
 /// \brief How workers are started and watched: the one seam between the coordinator and the
-/// machine. Every executor uses the same job files (job_files.h); the local one forks worker
-/// processes, a Slurm one would submit array tasks.
+/// machine. Every executor uses the same job files (job_files.h: spec, lock, heartbeat,
+/// outcome); the local one forks worker processes, the Slurm one submits job arrays. What an
+/// attempt produced is always decided from its files by the coordinator; an executor only says
+/// that an attempt has ended and what it knows about how.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,23 +16,37 @@ namespace beverloo {
 
 struct WorkerExit {
   std::int64_t attempt_id = 0;
+  /// The worker process's own status, when the executor saw it (local children).
+  bool have_status = false;
   bool signaled = false;
   int code = 0;  ///< exit code, or the signal number if signaled
+  /// The scheduler's account of the end (Slurm), used when the files do not say more.
+  std::optional<FailureClass> verdict;
+  std::string message;
 };
 
 class Executor {
  public:
   virtual ~Executor() = default;
   virtual std::string name() const = 0;
-  virtual int capacity() const = 0;
-  virtual int running() const = 0;
-  /// Starts a worker for the claimed job (spec.json is already written); returns its pid.
-  virtual std::int64_t start(const ClaimedJob& job, const std::string& job_dir) = 0;
-  /// Workers that ended since the last call.
-  virtual std::vector<WorkerExit> reap() = 0;
-  /// Asks every worker to checkpoint and stop (SIGTERM), then waits for them.
+  /// How many more attempts may be started now.
+  virtual int free_slots() const = 0;
+  /// Attempts started or adopted and not yet reported ended.
+  virtual int in_flight() const = 0;
+  /// Starts workers for claimed jobs whose spec.json is written.
+  virtual void start(const std::vector<ClaimedJob>& jobs) = 0;
+  /// After a coordinator restart: watch an attempt that an earlier coordinator started. Returns
+  /// false if it certainly is not running any more (the coordinator then settles it from files).
+  virtual bool adopt(const RunningAttempt& a) = 0;
+  /// Attempts that ended since the last call.
+  virtual std::vector<WorkerExit> poll() = 0;
+  /// Sleeps until something may have happened (at most a fraction of a second).
+  virtual void wait() = 0;
+  /// The coordinator is stopping: local workers checkpoint and stop (their exits are returned);
+  /// Slurm tasks keep running, to be collected by the next coordinator.
   virtual std::vector<WorkerExit> stop_all() = 0;
-  /// Stops one worker the same way (timeouts).
+  /// Asks one worker to checkpoint and stop (--job-timeout); executors whose scheduler enforces
+  /// time limits itself ignore it.
   virtual void stop(std::int64_t attempt_id) = 0;
 };
 
@@ -38,21 +55,31 @@ class Executor {
 class LocalExecutor final : public Executor {
  public:
   static constexpr int kStopGraceSeconds = 30;  ///< SIGTERM, then SIGKILL after this
-  explicit LocalExecutor(int workers) : capacity_(workers) {}
+  LocalExecutor(CampaignStore& store, std::string campaign_dir, int workers, double heartbeat_s)
+      : store_(store), dir_(std::move(campaign_dir)), capacity_(workers), heartbeat_s_(heartbeat_s) {}
   std::string name() const override { return "local"; }
-  int capacity() const override { return capacity_; }
-  int running() const override { return static_cast<int>(children_.size()); }
-  std::int64_t start(const ClaimedJob& job, const std::string& job_dir) override;
-  std::vector<WorkerExit> reap() override;
+  int free_slots() const override { return capacity_ - static_cast<int>(children_.size()); }
+  int in_flight() const override { return static_cast<int>(children_.size() + adopted_.size()); }
+  void start(const std::vector<ClaimedJob>& jobs) override;
+  bool adopt(const RunningAttempt& a) override;
+  std::vector<WorkerExit> poll() override;
+  void wait() override;
   std::vector<WorkerExit> stop_all() override;
   void stop(std::int64_t attempt_id) override;
 
  private:
   struct Child {
     std::int64_t pid, attempt_id;
+    std::string dir;
   };
+  std::vector<WorkerExit> reap();
+  CampaignStore& store_;
+  std::string dir_;
   int capacity_;
+  double heartbeat_s_;
   std::vector<Child> children_;
+  std::vector<Child> adopted_;  ///< workers of an earlier coordinator: watched through their locks
+  double last_heartbeat_ = 0;
 };
 
 }  // namespace beverloo

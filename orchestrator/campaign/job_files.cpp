@@ -32,6 +32,25 @@ void write_outcome(const std::string& job_dir, const Outcome& o) {
   write_text_atomically((std::filesystem::path(job_dir) / kOutcome).string(), j.dump(2) + "\n");
 }
 
+std::optional<Heartbeat> read_heartbeat(const std::string& job_dir) {
+  std::ifstream in(std::filesystem::path(job_dir) / kHeartbeat);
+  if (!in) return std::nullopt;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    return Heartbeat{j.at("token"), j.value("host", ""), j.at("unix_time"), j.value("step", std::int64_t{0}),
+                     j.value("pid", 0L), j.value("slurm_job", ""), j.value("slurm_restarts", -1)};
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+void write_heartbeat(const std::string& job_dir, const Heartbeat& h) {
+  const nlohmann::json j = {{"token", h.token},         {"host", h.host}, {"unix_time", h.unix_time},
+                            {"step", h.step},           {"pid", h.pid},   {"slurm_job", h.slurm_job},
+                            {"slurm_restarts", h.slurm_restarts}};
+  write_text_atomically((std::filesystem::path(job_dir) / kHeartbeat).string(), j.dump() + "\n");
+}
+
 bool lock_is_held(const std::string& job_dir) {
   const std::string path = (std::filesystem::path(job_dir) / kLock).string();
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);

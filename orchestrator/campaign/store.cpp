@@ -18,14 +18,34 @@ const char* to_string(FailureClass c) {
     case FailureClass::Interrupted: return "interrupted";
     case FailureClass::Lost: return "lost";
     case FailureClass::Internal: return "internal";
+    case FailureClass::Cancelled: return "cancelled";
+    case FailureClass::Preempted: return "preempted";
+    case FailureClass::NodeFailure: return "node_failure";
+    case FailureClass::OutOfMemory: return "out_of_memory";
+    case FailureClass::Stalled: return "stalled";
   }
   return "internal";
 }
 
 bool is_infrastructure(FailureClass c) {
   return c == FailureClass::Killed || c == FailureClass::Lost || c == FailureClass::Interrupted ||
-         c == FailureClass::Timeout;
+         c == FailureClass::Timeout || c == FailureClass::Preempted || c == FailureClass::NodeFailure ||
+         c == FailureClass::Stalled;
 }
+
+namespace {
+const char* attempt_state(FailureClass c) {
+  switch (c) {
+    case FailureClass::Interrupted:
+    case FailureClass::Preempted: return "interrupted";
+    case FailureClass::Lost:
+    case FailureClass::NodeFailure:
+    case FailureClass::Stalled: return "lost";
+    case FailureClass::Cancelled: return "cancelled";
+    default: return "failed";
+  }
+}
+}  // namespace
 
 std::string new_token() {
   std::ifstream urandom("/dev/urandom", std::ios::binary);
@@ -220,7 +240,7 @@ std::string CampaignStore::record_failure(std::int64_t attempt_id, const std::st
   db::Transaction tx(db_);
   db_.prepare("UPDATE attempts SET state = ?1, failure_class = ?2, exit_status = ?3, message = ?4, "
               "ended_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?5")
-      .bind(1, cls == FailureClass::Interrupted ? "interrupted" : (cls == FailureClass::Lost ? "lost" : "failed"))
+      .bind(1, attempt_state(cls))
       .bind(2, to_string(cls))
       .bind(3, exit_status)
       .bind(4, message)
@@ -237,14 +257,16 @@ std::string CampaignStore::record_failure(std::int64_t attempt_id, const std::st
       tx.commit();
       return state;  // a result or a cancel arrived meanwhile: nothing to undo
     }
-    if (cls == FailureClass::InvalidParameters || (!is_infrastructure(cls) && used >= max_retries))
+    if (cls == FailureClass::Cancelled)
+      state = "cancelled";  // a user cancelled it in the scheduler: not retried
+    else if (cls == FailureClass::InvalidParameters || (!is_infrastructure(cls) && used >= max_retries))
       state = "failed";
     else
       state = "pending";
     st.reset();
     db_.prepare("UPDATE jobs SET state = ?1, retries_used = retries_used + ?2 WHERE key = ?3")
         .bind(1, state)
-        .bind(2, is_infrastructure(cls) || state == "failed" ? 0 : 1)
+        .bind(2, is_infrastructure(cls) || state != "pending" ? 0 : 1)
         .bind(3, key)
         .run();
   }
@@ -255,10 +277,75 @@ std::string CampaignStore::record_failure(std::int64_t attempt_id, const std::st
 std::vector<RunningAttempt> CampaignStore::running_attempts() {
   std::vector<RunningAttempt> out;
   db::Statement st = db_.prepare(
-      "SELECT a.id, a.job_key, j.dir, a.token, a.executor, coalesce(a.pid, -1) FROM attempts a "
-      "JOIN jobs j ON j.key = a.job_key WHERE a.state = 'running' ORDER BY a.id");
-  while (st.step()) out.push_back({st.get_int(0), st.get_text(1), st.get_text(2), st.get_text(3), st.get_text(4), st.get_int(5)});
+      "SELECT a.id, a.job_key, j.dir, a.token, a.executor, coalesce(a.pid, -1), coalesce(a.slurm_submission, -1), "
+      "coalesce(a.slurm_array_task, -1) FROM attempts a JOIN jobs j ON j.key = a.job_key WHERE a.state = 'running' ORDER BY a.id");
+  while (st.step())
+    out.push_back({st.get_int(0), st.get_text(1), st.get_text(2), st.get_text(3), st.get_text(4), st.get_int(5), st.get_int(6),
+                   static_cast<int>(st.get_int(7))});
   return out;
+}
+
+std::int64_t CampaignStore::begin_submission(const std::string& name, int array_size, int throttle,
+                                             const std::string& script, const std::string& sbatch_args_json,
+                                             const std::vector<std::pair<std::int64_t, int>>& attempt_tasks) {
+  db::Transaction tx(db_);
+  db::Statement insert = db_.prepare(
+      "INSERT INTO slurm_submissions (name, state, array_size, throttle, script, sbatch_args) VALUES (?1, 'submitting', ?2, ?3, ?4, ?5)");
+  insert.bind(1, name).bind(2, array_size).bind(4, script).bind(5, sbatch_args_json);
+  if (throttle > 0)
+    insert.bind(3, throttle);
+  else
+    insert.bind_null(3);
+  insert.run();
+  const std::int64_t id = db_.last_insert_rowid();
+  db::Statement link = db_.prepare("UPDATE attempts SET slurm_submission = ?1, slurm_array_task = ?2 WHERE id = ?3");
+  for (const auto& [attempt, task] : attempt_tasks) link.bind(1, id).bind(2, task).bind(3, attempt).run();
+  tx.commit();
+  return id;
+}
+
+void CampaignStore::submission_done(std::int64_t submission, const std::string& slurm_job_id) {
+  db::Transaction tx(db_);
+  db_.prepare("UPDATE slurm_submissions SET state = 'submitted', slurm_job_id = ?1, "
+              "submitted_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?2")
+      .bind(1, slurm_job_id)
+      .bind(2, submission)
+      .run();
+  db_.prepare("UPDATE attempts SET slurm_job_id = ?1 || '_' || slurm_array_task, slurm_state = coalesce(slurm_state, 'PENDING') "
+              "WHERE slurm_submission = ?2")
+      .bind(1, slurm_job_id)
+      .bind(2, submission)
+      .run();
+  tx.commit();
+}
+
+void CampaignStore::submission_never_happened(std::int64_t submission, const std::string& message) {
+  db_.prepare("UPDATE slurm_submissions SET state = 'never_submitted', message = ?1 WHERE id = ?2")
+      .bind(1, message)
+      .bind(2, submission)
+      .run();
+}
+
+SlurmSubmission CampaignStore::submission(std::int64_t id) {
+  db::Statement st = db_.prepare("SELECT id, name, state, coalesce(slurm_job_id, '') FROM slurm_submissions WHERE id = ?1");
+  st.bind(1, id);
+  if (!st.step()) return {};
+  return {st.get_int(0), st.get_text(1), st.get_text(2), st.get_text(3)};
+}
+
+void CampaignStore::set_slurm_state(std::int64_t attempt_id, const std::string& state, int restarts) {
+  db_.prepare("UPDATE attempts SET slurm_state = ?1, slurm_restarts = CASE WHEN ?2 >= 0 THEN ?2 ELSE slurm_restarts END WHERE id = ?3")
+      .bind(1, state)
+      .bind(2, restarts)
+      .bind(3, attempt_id)
+      .run();
+}
+
+void CampaignStore::heartbeat_at(std::int64_t attempt_id, double unix_seconds) {
+  db_.prepare("UPDATE attempts SET heartbeat_at = strftime('%Y-%m-%dT%H:%M:%fZ', ?1, 'unixepoch') WHERE id = ?2")
+      .bind(1, unix_seconds)
+      .bind(2, attempt_id)
+      .run();
 }
 
 StateCounts CampaignStore::counts(std::int64_t campaign) {

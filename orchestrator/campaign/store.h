@@ -13,10 +13,14 @@
 namespace beverloo {
 
 /// Why an attempt failed; decides whether the job is retried and whether that costs a retry.
-enum class FailureClass { InvalidParameters, BlowUp, Killed, Timeout, Io, Interrupted, Lost, Internal };
+enum class FailureClass {
+  InvalidParameters, BlowUp, Killed, Timeout, Io, Interrupted, Lost, Internal,
+  // what Slurm can end an attempt with (slurm_output.h has the table)
+  Cancelled, Preempted, NodeFailure, OutOfMemory, Stalled
+};
 const char* to_string(FailureClass c);
-/// Infrastructure failures (killed, lost, interrupted, timeout) resume from the checkpoint
-/// without using up the job's retry budget.
+/// Infrastructure failures (killed, lost, interrupted, timeout, preempted, node failure, stalled)
+/// resume from the checkpoint without using up the job's retry budget.
 bool is_infrastructure(FailureClass c);
 
 struct ClaimedJob {
@@ -29,6 +33,15 @@ struct RunningAttempt {
   std::int64_t attempt_id;
   std::string key, dir, token, executor;
   std::int64_t pid;
+  // Slurm attempts: their submission (-1: claimed but never handed to sbatch) and array index
+  std::int64_t submission = -1;
+  int array_task = -1;
+};
+
+/// One sbatch call, as recorded before and after it ran.
+struct SlurmSubmission {
+  std::int64_t id = -1;
+  std::string name, state, slurm_job_id;  ///< state: submitting | submitted | never_submitted
 };
 
 struct StateCounts {
@@ -62,6 +75,18 @@ class CampaignStore {
                              const std::string& message, int max_retries);
 
   std::vector<RunningAttempt> running_attempts();
+
+  // Slurm submissions: recorded before sbatch runs (with the array index of each attempt) and
+  // completed after it, each in one transaction.
+  std::int64_t begin_submission(const std::string& name, int array_size, int throttle, const std::string& script,
+                                const std::string& sbatch_args_json,
+                                const std::vector<std::pair<std::int64_t, int>>& attempt_tasks);
+  void submission_done(std::int64_t submission, const std::string& slurm_job_id);
+  void submission_never_happened(std::int64_t submission, const std::string& message);
+  SlurmSubmission submission(std::int64_t id);
+  void set_slurm_state(std::int64_t attempt_id, const std::string& state, int restarts);
+  /// heartbeat_at from the worker's heartbeat file (unix seconds).
+  void heartbeat_at(std::int64_t attempt_id, double unix_seconds);
   StateCounts counts(std::int64_t campaign);
   /// Failed and cancelled jobs of the campaign back to pending (retry budget reset); returns how many.
   std::int64_t retry(std::int64_t campaign, bool include_cancelled);

@@ -1,28 +1,90 @@
 #include "worker.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <thread>
 
 #include "engine/io/h5.h"
 #include "engine/protocol/hopper_run.h"
 #include "job_files.h"
 #include "orchestrator/cli/exit_codes.h"
 #include "orchestrator/cli/signals.h"
+#include "store.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
 
-int run_worker(const std::string& spec_path) {
-  const std::string dir = fs::path(spec_path).parent_path().string();
-  nlohmann::json spec;
-  {
-    std::ifstream in(spec_path);
-    if (!in) {
-      std::fprintf(stderr, "beverloo worker: cannot read %s\n", spec_path.c_str());
-      return exit_code::kIo;
-    }
-    spec = nlohmann::json::parse(in);
+namespace {
+
+double unix_now() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+std::string env_or(const char* name, const std::string& fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::string(v) : fallback;
+}
+
+/// Rewrites heartbeat.json every interval while an attempt runs (its own thread: the engine
+/// only publishes its step counter).
+class HeartbeatWriter {
+ public:
+  HeartbeatWriter(std::string dir, std::string token, double interval_s, const std::atomic<std::int64_t>& step)
+      : dir_(std::move(dir)), step_(step), interval_(interval_s) {
+    hb_.token = std::move(token);
+    hb_.host = host_name();
+    hb_.pid = static_cast<long>(::getpid());
+    const std::string array = env_or("SLURM_ARRAY_JOB_ID", ""), task = env_or("SLURM_ARRAY_TASK_ID", "");
+    if (!array.empty()) hb_.slurm_job = array + "_" + task;
+    const std::string restarts = env_or("SLURM_RESTART_COUNT", "");
+    hb_.slurm_restarts = !array.empty() ? (restarts.empty() ? 0 : std::atoi(restarts.c_str())) : -1;
+    write();
+    thread_ = std::thread([this] { loop(); });
   }
+  ~HeartbeatWriter() {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      done_ = true;
+    }
+    cv_.notify_one();
+    thread_.join();
+  }
+
+ private:
+  void loop() {
+    std::unique_lock<std::mutex> lock(m_);
+    while (!cv_.wait_for(lock, std::chrono::duration<double>(interval_), [this] { return done_; })) write();
+  }
+  void write() {
+    hb_.unix_time = unix_now();
+    hb_.step = step_.load(std::memory_order_relaxed);
+    try {
+      job_files::write_heartbeat(dir_, hb_);
+    } catch (const std::exception& e) {  // a full disk must not kill the run; the coordinator will see it stall
+      std::fprintf(stderr, "beverloo worker: cannot write the heartbeat: %s\n", e.what());
+    }
+  }
+  std::string dir_;
+  const std::atomic<std::int64_t>& step_;
+  double interval_;
+  job_files::Heartbeat hb_;
+  std::mutex m_;
+  std::condition_variable cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+/// One attempt in its job directory: the engine run, resumed from a checkpoint if there is one,
+/// ending with outcome.json (written last, atomically, with the attempt's token).
+int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::atomic<bool>* stop) {
   job_files::Outcome out;
   out.token = spec.at("token");
   out.attempt_no = spec.at("attempt_no");
@@ -45,6 +107,8 @@ int run_worker(const std::string& spec_path) {
   } catch (const ConfigError& e) {
     return finish(exit_code::kConfig, "invalid_parameters", e.what());
   }
+  std::atomic<std::int64_t> step{0};
+  HeartbeatWriter heartbeat(dir, out.token, spec.value("heartbeat_s", 30.0), step);
   try {
     // A previous attempt may have finished the run and died before writing its outcome.
     const fs::path result = fs::path(dir) / "result.h5";
@@ -57,7 +121,8 @@ int run_worker(const std::string& spec_path) {
     opt.output_dir = dir;
     opt.resume = true;
     opt.progress = ProgressMode::Log;
-    opt.stop_request = install_stop_handlers();
+    opt.stop_request = stop;
+    opt.progress_step = &step;
     const RunResult r = run_hopper(c, opt);
     if (r.status == "interrupted") return finish(exit_code::kInterrupted, "interrupted", r.stop_reason);
     return finish(exit_code::kOk, "", "");
@@ -70,6 +135,109 @@ int run_worker(const std::string& spec_path) {
   } catch (const std::exception& e) {
     return finish(exit_code::kInternal, "internal", e.what());
   }
+}
+
+bool read_json(const std::string& path, nlohmann::json& j) {
+  std::ifstream in(path);
+  if (!in) return false;
+  try {
+    j = nlohmann::json::parse(in);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+/// stdout and stderr to the job's log for the duration of one attempt (array tasks run several).
+class LogRedirect {
+ public:
+  explicit LogRedirect(const std::string& dir) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    saved_out_ = ::dup(STDOUT_FILENO);
+    saved_err_ = ::dup(STDERR_FILENO);
+    const int fd = ::open((fs::path(dir) / job_files::kLog).c_str(), O_CREAT | O_WRONLY | O_APPEND | O_CLOEXEC, 0644);
+    if (fd >= 0) {
+      ::dup2(fd, STDOUT_FILENO);
+      ::dup2(fd, STDERR_FILENO);
+      ::close(fd);
+    }
+  }
+  ~LogRedirect() {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::dup2(saved_out_, STDOUT_FILENO);
+    ::dup2(saved_err_, STDERR_FILENO);
+    ::close(saved_out_);
+    ::close(saved_err_);
+  }
+
+ private:
+  int saved_out_ = -1, saved_err_ = -1;
+};
+
+}  // namespace
+
+int run_worker(const std::string& spec_path) {
+  const std::string dir = fs::path(spec_path).parent_path().string();
+  nlohmann::json spec;
+  if (!read_json(spec_path, spec)) {
+    std::fprintf(stderr, "beverloo worker: cannot read %s\n", spec_path.c_str());
+    return exit_code::kIo;
+  }
+  return run_attempt(dir, spec, install_stop_handlers());
+}
+
+int run_worker_task(const std::string& manifest_path, int task_index) {
+  const std::atomic<bool>* stop = install_stop_handlers();
+  nlohmann::json manifest;
+  if (!read_json(manifest_path, manifest) || !manifest.contains("tasks") || !manifest.contains("root")) {
+    std::fprintf(stderr, "beverloo worker: cannot read the manifest %s\n", manifest_path.c_str());
+    return exit_code::kIo;
+  }
+  const nlohmann::json& tasks = manifest.at("tasks");
+  if (task_index < 0 || task_index >= static_cast<int>(tasks.size())) {
+    std::fprintf(stderr, "beverloo worker: task %d is not in %s (%zu tasks)\n", task_index, manifest_path.c_str(), tasks.size());
+    return exit_code::kConfig;
+  }
+  const fs::path root = manifest.at("root").get<std::string>();
+  int status = exit_code::kOk;
+  for (const nlohmann::json& entry : tasks.at(task_index)) {
+    const std::string dir = (root / entry.at("dir").get<std::string>()).string();
+    const std::string token = entry.at("token");
+    const int lock = ::open((fs::path(dir) / job_files::kLock).c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (lock < 0 || ::flock(lock, LOCK_EX | LOCK_NB) != 0) {
+      // another live worker runs this job (a superseded attempt on this node): leave it alone
+      std::fprintf(stderr, "beverloo worker: %s is locked by another worker; skipped\n", dir.c_str());
+      if (lock >= 0) ::close(lock);
+      continue;
+    }
+    nlohmann::json spec;
+    if (!read_json((fs::path(dir) / job_files::kSpec).string(), spec) || spec.value("token", "") != token) {
+      // the coordinator has given this job to a newer attempt: this one must not run it
+      std::fprintf(stderr, "beverloo worker: %s belongs to a newer attempt; skipped\n", dir.c_str());
+      ::close(lock);
+      continue;
+    }
+    int code;
+    {
+      LogRedirect log(dir);
+      if (stop->load()) {
+        job_files::write_outcome(dir, {token, spec.at("attempt_no"), exit_code::kInterrupted, "interrupted",
+                                       "not started: the array task was stopped before it"});
+        code = exit_code::kInterrupted;
+      } else {
+        std::fprintf(stderr, "beverloo worker: attempt %d in Slurm task %s_%s (restart %s)\n", spec.at("attempt_no").get<int>(),
+                     env_or("SLURM_ARRAY_JOB_ID", "?").c_str(), env_or("SLURM_ARRAY_TASK_ID", "?").c_str(),
+                     env_or("SLURM_RESTART_COUNT", "0").c_str());
+        code = run_attempt(dir, spec, stop);
+      }
+    }
+    ::close(lock);
+    if (code == exit_code::kInterrupted) status = exit_code::kInterrupted;
+    else if (code != exit_code::kOk && status == exit_code::kOk) status = code;
+  }
+  return status;
 }
 
 }  // namespace beverloo

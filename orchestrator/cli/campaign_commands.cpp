@@ -152,6 +152,36 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   auto to_mode = [](const std::string& p) {
     return p == "terminal" ? ProgressMode::Terminal : p == "log" ? ProgressMode::Log : p == "quiet" ? ProgressMode::Quiet : ProgressMode::Auto;
   };
+  // where workers run (docs/cluster.md)
+  auto add_executor_options = [opts](CLI::App* cmd) {
+    SlurmOptions& s = opts->slurm;
+    cmd->add_option("--executor", opts->executor, "local (worker processes here) | slurm (job arrays)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+    cmd->add_option("--partition", s.partition, "slurm: partition (default: the cluster's default)");
+    cmd->add_option("--time-limit", s.time_limit, "slurm: --time per array task, e.g. 4:00:00 (default: the partition's)");
+    cmd->add_option("--max-array", s.max_array, "slurm: tasks per array (default: MaxArraySize - 1, at most 1000)")
+        ->check(CLI::Range(1, 1000000));
+    cmd->add_option("--throttle", s.throttle, "slurm: array tasks running at once per array, the %N of --array (default: no limit)")
+        ->check(CLI::Range(1, 1000000));
+    cmd->add_option("--bundle", s.bundle, "slurm: jobs per array task (default: packed by estimated cost, see --bundle-target)")
+        ->check(CLI::Range(1, 10000));
+    cmd->add_option("--bundle-target", s.bundle_target_s, "slurm: estimated seconds of work per array task when packing (default 600)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--signal-lead", s.signal_lead_s, "slurm: seconds before the time limit at which workers checkpoint (default 120)")
+        ->check(CLI::Range(10, 86400));
+    cmd->add_option("--max-in-flight", s.max_in_flight, "slurm: attempts submitted and not yet ended (default 10000)")
+        ->check(CLI::Range(1, 10000000));
+    cmd->add_option("--poll-min", s.poll_min_s, "slurm: seconds between squeue calls after a change (default 2)")->check(CLI::PositiveNumber);
+    cmd->add_option("--poll-max", s.poll_max_s, "slurm: the interval doubles while nothing changes, up to this (default 60)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--result-grace", s.result_grace_s, "slurm: seconds to wait for the files of a task that ended (default 30)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--stall-timeout", s.stall_timeout_s, "slurm: a RUNNING task silent this long is cancelled and rerun (default 600)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--sbatch-arg", s.sbatch_args, "slurm: passed to sbatch as it is (repeat: --sbatch-arg=--account=X --sbatch-arg=--mem=2G)")
+        ->allow_extra_args(false);
+    cmd->add_option("--worker-binary", s.worker_binary, "slurm: the beverloo compute nodes run (default: this one)");
+  };
   auto add_run_options = [&](CLI::App* cmd) {
     cmd->add_option("--dir", opts->dir, "campaign directory (default: campaigns/<sweep name>)");
     cmd->add_option("--workers", opts->workers, "worker processes (default: the number of cores)")->check(CLI::Range(1, 4096));
@@ -160,6 +190,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
     cmd->add_option("--heartbeat", opts->heartbeat_s, "seconds between heartbeat records of live workers (default 30)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--progress", *progress, "auto | terminal | log | quiet")->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));
+    add_executor_options(cmd);
   };
 
   CLI::App* run = app.add_subcommand("run", "Create or reopen a campaign and run every job that is not done");
@@ -222,6 +253,8 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   crun->add_option("--dir", opts->dir, "campaign directory");
   crun->add_option("--workers", opts->workers, "worker processes");
   crun->add_option("--progress", *progress, "auto | terminal | log | quiet");
+  crun->add_option("--heartbeat", opts->heartbeat_s, "seconds between heartbeats of live workers (default 30)")->check(CLI::PositiveNumber);
+  add_executor_options(crun);
   crun->callback([=, &exit_status] {
     exit_status = guarded("campaign run", [&] {
       CampaignOptions o = *opts;
@@ -258,8 +291,19 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   CLI::App* worker = app.add_subcommand("worker", "Run one job attempt from its spec (started by executors)");
   worker->group("");  // not for people: hidden from --help
   auto spec = std::make_shared<std::string>();
-  worker->add_option("SPEC", *spec)->required();
-  worker->callback([=, &exit_status] { exit_status = run_worker(*spec); });
+  auto manifest = std::make_shared<std::string>();
+  auto task = std::make_shared<int>(-1);
+  worker->add_option("SPEC", *spec, "spec.json of one attempt (local executor)");
+  worker->add_option("--manifest", *manifest, "manifest.json of a Slurm submission");
+  worker->add_option("--task", *task, "array index in the manifest (SLURM_ARRAY_TASK_ID)");
+  worker->callback([=, &exit_status] {
+    if (!manifest->empty())
+      exit_status = run_worker_task(*manifest, *task);
+    else if (!spec->empty())
+      exit_status = run_worker(*spec);
+    else
+      throw CLI::ValidationError("worker", "give SPEC or --manifest M --task I");
+  });
 }
 
 }  // namespace beverloo

@@ -19,8 +19,10 @@ void check_store(Database& db) {
 
 void open_store(Database& db) {
   db.exec("PRAGMA journal_mode=WAL");
-  db.exec("PRAGMA foreign_keys=ON");
   db.exec("PRAGMA synchronous=NORMAL");
+  // Off while migrating (it cannot change inside a transaction): a migration may rebuild a table
+  // that others reference, as SQLite's ALTER TABLE procedure requires; checked before commit.
+  db.exec("PRAGMA foreign_keys=OFF");
   Transaction tx(db);
   const std::int64_t app = db.scalar_int("PRAGMA application_id");
   const std::int64_t version = db.scalar_int("PRAGMA user_version");
@@ -35,7 +37,10 @@ void open_store(Database& db) {
     db.exec(kMigrations[v].sql);
     db.exec("PRAGMA user_version=" + std::to_string(v + 1));
   }
+  if (db.scalar_int("SELECT count(*) FROM pragma_foreign_key_check") != 0)
+    throw DbError("a schema migration left dangling references; the database is unchanged", SQLITE_CONSTRAINT);
   tx.commit();
+  db.exec("PRAGMA foreign_keys=ON");
 }
 
 }  // namespace beverloo::db

@@ -98,6 +98,8 @@ void HopperRun<D>::prepare() {
   if (have_dir && opt_.resume && std::filesystem::exists(path("checkpoint.h5"))) {
     load_checkpoint(path("checkpoint.h5"));
     ++resumed_times_;
+    if (opt_.progress != ProgressMode::Quiet)
+      std::fprintf(stderr, "resumed from checkpoint.h5 at step %lld (resume %d)\n", static_cast<long long>(s_.step), resumed_times_);
   } else {
     place_and_minimize();
     check_containment();

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -186,6 +187,9 @@ void SlurmExecutor::submit_chunk(const std::vector<ClaimedJob>& jobs, const std:
       throw std::runtime_error("sbatch failed: " + first_line(r.text()));
     }
   }
+  // Fault injection for the tests: die exactly in the window this design exists for (Slurm has
+  // the array, the database does not know its id yet).
+  if (const char* fault = std::getenv("BEVERLOO_FAULT"); fault && std::string(fault) == "after_sbatch") ::_exit(86);
   store_.submission_done(sub, array_id);
   for (auto& [id, t] : tracked_)
     if (t.submission == sub) t.array_id = array_id;

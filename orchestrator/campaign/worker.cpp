@@ -176,6 +176,19 @@ class LogRedirect {
   int saved_out_ = -1, saved_err_ = -1;
 };
 
+/// A superseded attempt (stalled, cancelled) may still hold the job for Slurm's KillWait: wait
+/// for it rather than give up the task at once.
+constexpr double kLockWaitSeconds = 120;
+
+bool lock_within(int fd, double seconds, const std::atomic<bool>* stop) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    if (stop->load() || std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_worker(const std::string& spec_path) {
@@ -205,18 +218,27 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
   for (const nlohmann::json& entry : tasks.at(task_index)) {
     const std::string dir = (root / entry.at("dir").get<std::string>()).string();
     const std::string token = entry.at("token");
-    const int lock = ::open((fs::path(dir) / job_files::kLock).c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-    if (lock < 0 || ::flock(lock, LOCK_EX | LOCK_NB) != 0) {
-      // another live worker runs this job (a superseded attempt on this node): leave it alone
-      std::fprintf(stderr, "beverloo worker: %s is locked by another worker; skipped\n", dir.c_str());
-      if (lock >= 0) ::close(lock);
-      continue;
-    }
+    auto current = [&](nlohmann::json& spec) {  // is this attempt still the job's current one?
+      return read_json((fs::path(dir) / job_files::kSpec).string(), spec) && spec.value("token", "") == token;
+    };
     nlohmann::json spec;
-    if (!read_json((fs::path(dir) / job_files::kSpec).string(), spec) || spec.value("token", "") != token) {
+    if (!current(spec)) {
       // the coordinator has given this job to a newer attempt: this one must not run it
       std::fprintf(stderr, "beverloo worker: %s belongs to a newer attempt; skipped\n", dir.c_str());
-      ::close(lock);
+      continue;
+    }
+    const int lock = ::open((fs::path(dir) / job_files::kLock).c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    bool locked = false;
+    if (lock >= 0) {
+      const std::atomic<std::int64_t> no_step{0};
+      HeartbeatWriter waiting(dir, token, spec.value("heartbeat_s", 30.0), no_step);  // alive while it waits
+      locked = lock_within(lock, kLockWaitSeconds, stop);
+    }
+    if (!locked || !current(spec)) {
+      // another live worker runs this job (a superseded attempt that Slurm has not killed yet)
+      std::fprintf(stderr, "beverloo worker: %s is locked by another worker or was given to a newer attempt; skipped\n",
+                   dir.c_str());
+      if (lock >= 0) ::close(lock);
       continue;
     }
     int code;

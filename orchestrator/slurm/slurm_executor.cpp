@@ -341,20 +341,24 @@ std::vector<WorkerExit> SlurmExecutor::poll() {
     }
     if (t.ended_since < 0) t.ended_since = now;
     const double waited = now - t.ended_since;
+    // A result or a science failure is final. "interrupted" is not: a requeued task (scontrol
+    // requeue, preemption with requeue) passes through ended-looking states and runs the same
+    // attempt again, so it gets the grace period, as does a task that ended without files (NFS lag).
+    const bool final_outcome = ours && outcome->failure_class != "interrupted";
     if (known) {
-      // ended: files first; a task that COMPLETED or FAILED without them gets the grace period
-      const bool quiet_end = t.state == "COMPLETED" || t.state == "FAILED";
-      if (ours || !quiet_end || waited >= options_.result_grace_s) {
+      if (final_outcome || waited >= options_.result_grace_s) {
         out.push_back(ended(t, t.state, rec->exit_code, true));
         done.push_back(id);
       }
-    } else if (ours) {  // forgotten by squeue, no accounting record: the result file speaks for itself
+    } else if (final_outcome) {  // forgotten by squeue, no accounting record: the result file speaks for itself
       out.push_back(ended(t, "", "", false));
       done.push_back(id);
     } else if (waited >= std::max(options_.result_grace_s, 4 * options_.poll_max_s)) {
       WorkerExit e = ended(t, "", "", false);
-      e.verdict = FailureClass::Lost;
-      e.message = "Slurm no longer knows task " + t.array_id + "_" + std::to_string(t.task) + " and it left no result";
+      if (!ours) {
+        e.verdict = FailureClass::Lost;
+        e.message = "Slurm no longer knows task " + t.array_id + "_" + std::to_string(t.task) + " and it left no result";
+      }
       out.push_back(e);
       done.push_back(id);
     }

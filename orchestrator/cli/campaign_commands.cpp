@@ -128,6 +128,19 @@ int status_command(const std::string& dir) {
   std::string classes;
   while (fails.step()) classes += (classes.empty() ? "" : ", ") + fails.get_text(0) + " " + std::to_string(fails.get_int(1));
   std::printf("failures     %s\n", classes.empty() ? "none" : classes.c_str());
+  if (db.scalar_int("PRAGMA user_version") >= 4 && db.scalar_int("SELECT count(*) FROM slurm_submissions") > 0) {
+    // Slurm's view as the coordinator last saw it (attempts.slurm_state), per state
+    db::Statement arrays = db.prepare("SELECT count(*), coalesce(sum(array_size), 0) FROM slurm_submissions WHERE state = 'submitted'");
+    arrays.step();
+    db::Statement live = db.prepare(
+        "SELECT coalesce(a.slurm_state, 'not submitted'), count(*) FROM attempts a JOIN campaign_jobs cj ON cj.job_key = a.job_key "
+        "WHERE cj.campaign_id = ?1 AND a.state = 'running' AND a.executor = 'slurm' GROUP BY 1 ORDER BY 2 DESC");
+    live.bind(1, id);
+    std::string states;
+    while (live.step()) states += (states.empty() ? "" : ", ") + live.get_text(0) + " " + std::to_string(live.get_int(1));
+    std::printf("slurm        %lld arrays, %lld tasks; attempts in flight: %s\n", (long long)arrays.get_int(0),
+                (long long)arrays.get_int(1), states.empty() ? "none" : states.c_str());
+  }
   return exit_code::kOk;
 }
 

@@ -22,12 +22,17 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       drag_(c.zeta / shape.n_v),
       corners_(hopper, p, shape, c.E_w),
       hopper_(hopper) {
-  list_.set_groups(&p.owner);
   if (shape.smooth) {
+    list_.set_groups(&p.owner);
     smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, c.mu);
-  }
-  else
+  } else {
+    // Rough: vertex disks of one polygon repel too, except neighbours along the ring (they
+    // overlap by construction; the segment term holds them). At rest vertices two apart are
+    // 2 l0 cos(pi/n_v) > l0 away, so this acts only on a polygon folding over itself, which soft
+    // bending (K_b ~ 1e-2) otherwise lets happen. Not in the paper: docs/validation.md.
+    list_.set_groups(&p.owner, &p.first, 1);
     rough_ = std::make_unique<SpContact<2>>(list_, E_c, c.mu);
+  }
 }
 
 ForceReport DpForceField::compute(ParticleState<2>& s) {

@@ -90,7 +90,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
           const int cc = (c2 * dims[1] + c1) * dims[0] + c0;
           for (int k = cell_start_[cc]; k < cell_start_[cc + 1]; ++k) {
             const int j = cell_items_[k];
-            if (j <= i || same_group(i, j)) continue;
+            if (j <= i || excluded(i, j)) continue;
             if ((xi - s.x[j]).squaredNorm() < cut2[si][s.species[j]]) nbr_.push_back(j);
           }
         }
@@ -127,7 +127,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
   x_ref_[i] = s.x[i];
   const int si = s.species[i];
   for (int j = 0; j < n; ++j) {
-    if (j == i || same_group(i, j)) continue;
+    if (j == i || excluded(i, j)) continue;
     const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + skin_;
     if ((x_ref_[i] - x_ref_[j]).squaredNorm() >= c * c) continue;
     const int row = std::min(i, j), other = std::max(i, j);

@@ -8,6 +8,7 @@
 /// built, so a run resumed from a checkpoint (which rebuilds the list) stays bit-identical.
 /// The same build records, per particle, which walls are within sigma_i/2 + skin.
 #include <cstdint>
+#include <algorithm>
 #include <vector>
 
 #include "../geometry/hopper.h"
@@ -27,10 +28,14 @@ class NeighborList {
     return true;
   }
   void build(const ParticleState<D>& s, const Hopper<D>& hopper);
-  /// Items with equal group ids are never listed as pairs (vertices of one polygon); the
-  /// vector must outlive the list. nullptr: all pairs (SP particles).
-  void set_groups(const std::vector<int>* group) {
+  /// Items with equal group ids are not listed as pairs (vertices of one polygon); the vectors
+  /// must outlive the list. nullptr: all pairs (SP particles). With `first` (group g holds items
+  /// first[g] .. first[g+1]-1, a ring) and ring >= 0, only pairs of one group at most `ring`
+  /// places apart along the ring are left out: the others are self-contacts of a polygon.
+  void set_groups(const std::vector<int>* group, const std::vector<int>* first = nullptr, int ring = -1) {
     group_ = group;
+    first_ = first;
+    exclude_ring_ = first ? ring : -1;
     force_ = true;
   }
   /// Forces the next update() to rebuild.
@@ -54,10 +59,20 @@ class NeighborList {
  private:
   bool moved_beyond_half_skin(const ParticleState<D>& s) const;
 
-  bool same_group(int i, int j) const { return group_ && (*group_)[i] == (*group_)[j]; }
+  bool excluded(int i, int j) const {
+    if (!group_) return false;
+    const int g = (*group_)[i];
+    if (g != (*group_)[j]) return false;
+    if (exclude_ring_ < 0) return true;
+    const int n = (*first_)[g + 1] - (*first_)[g];
+    const int d = i > j ? i - j : j - i;
+    return std::min(d, n - d) <= exclude_ring_;
+  }
 
   double skin_;
   const std::vector<int>* group_ = nullptr;
+  const std::vector<int>* first_ = nullptr;
+  int exclude_ring_ = -1;
   bool force_ = true;
   std::int64_t builds_ = 0;
   VecArray<D> x_ref_;

@@ -121,6 +121,28 @@ TEST(DpForces, SmoothContactMatchesBruteForceBothWays) {
   EXPECT_NEAR(ff.terms()[3]->accumulate(rev, g).energy, e, 1e-10 * e);
 }
 
+TEST(DpForces, RoughPolygonFoldedOntoItselfRepelsItsOwnVertices) {
+  // a rough polygon far from the other one: regular, no contact energy (ring neighbours are
+  // left out); folded so that vertex 0 sits half a disk inside vertex 5, the disks repel with
+  // the pair energy E_c/2 (1 - d/l0)^2 and the forces are equal and opposite
+  DpFixture fx(dp_config("dp_rough", 2), {Vec<2>(-3, 5), Vec<2>(3, 5)}, 0.0, 1);
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  ForceTerm<2>& contact = *ff.terms()[3];
+  ff.list().build(fx.verts, h);
+  VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+  EXPECT_EQ(contact.accumulate(fx.verts, f).energy, 0.0);
+  const double l0 = fx.shape.l0[0];
+  const Vec<2> inward = (Vec<2>(-3, 5) - fx.verts.x[5]).normalized();  // clear of vertices 4 and 6
+  fx.verts.x[0] = fx.verts.x[5] + 0.5 * l0 * inward;
+  ff.list().build(fx.verts, h);
+  for (auto& fi : f) fi.setZero();
+  const double e = contact.accumulate(fx.verts, f).energy;
+  EXPECT_NEAR(e, 0.5 * fx.c.dp.E_c * 0.25, 1e-9 * e);
+  EXPECT_LT((f[0] + f[5]).norm(), 1e-9 * f[0].norm());
+  EXPECT_GT(f[0].dot(inward), 0);  // pushed away from vertex 5
+}
+
 TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
   // Vertex j of polygon 1 (a spike: its polygon is far away, its edges point away) travels
   // inside the contact shell of polygon 0 along edge i-1, around the convex corner i on an

@@ -306,7 +306,7 @@ std::vector<WorkerExit> SlurmExecutor::poll() {
   const auto queue = slurm::by_task(slurm::parse_squeue(q.out));
   std::set<std::string> missing_arrays;
   for (const auto& [id, t] : tracked_)
-    if (!queue.count({t.array_id, t.task})) missing_arrays.insert(t.array_id);
+    if (!slurm::find_task(queue, t.array_id, t.task)) missing_arrays.insert(t.array_id);
   const auto final_records = missing_arrays.empty() ? std::map<slurm::TaskKey, slurm::TaskRecord>{} : accounting(missing_arrays);
 
   bool changed = false;
@@ -317,9 +317,8 @@ std::vector<WorkerExit> SlurmExecutor::poll() {
     const auto outcome = job_files::read_outcome(t.dir);
     const bool ours = outcome && outcome->token == t.token;
     const slurm::TaskKey key{t.array_id, t.task};
-    const slurm::TaskRecord* rec = nullptr;
-    if (auto it = queue.find(key); it != queue.end()) rec = &it->second;
-    else if (auto f = final_records.find(key); f != final_records.end()) rec = &f->second;
+    const slurm::TaskRecord* rec = slurm::find_task(queue, t.array_id, t.task);
+    if (!rec) rec = slurm::find_task(final_records, t.array_id, t.task);
     const bool known = rec != nullptr;
     if (known && rec->state != t.state) {
       t.state = rec->state;

@@ -200,4 +200,10 @@ std::map<TaskKey, TaskRecord> by_task(const std::vector<TaskRecord>& records) {
   return out;
 }
 
+const TaskRecord* find_task(const std::map<TaskKey, TaskRecord>& records, const std::string& array, int task) {
+  if (auto it = records.find({array, task}); it != records.end()) return &it->second;
+  if (auto meta = records.find({array, -1}); meta != records.end()) return &meta->second;
+  return nullptr;
+}
+
 }  // namespace beverloo::slurm

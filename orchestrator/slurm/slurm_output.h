@@ -62,5 +62,9 @@ Verdict verdict_for(const std::string& state, const std::string& exit_code = "")
 /// Key of a task in lookups.
 using TaskKey = std::pair<std::string, int>;
 std::map<TaskKey, TaskRecord> by_task(const std::vector<TaskRecord>& records);
+/// The record of array task (array, task): its own, else the array's meta record (task -1),
+/// which stands for tasks not yet split off (an array cancelled while tasks were pending shows
+/// them as one line with %K = N/A, and jobcomp writes no ArrayTaskId). nullptr if neither.
+const TaskRecord* find_task(const std::map<TaskKey, TaskRecord>& records, const std::string& array, int task);
 
 }  // namespace beverloo::slurm

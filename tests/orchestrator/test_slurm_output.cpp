@@ -78,6 +78,18 @@ TEST(SlurmOutput, JobcompRecordedRequeueRecordIsSupersededByTheFinalOne) {
   EXPECT_EQ(m.at({"1", 0}).name, "beverloo-rec1");
 }
 
+TEST(SlurmOutput, PendingTasksOfACancelledArrayAreFoundThroughItsMetaRecord) {
+  // recorded: 12 tasks, throttle 2, scancel -u root while tasks 4-11 were pending
+  const auto q = by_task(parse_squeue(data("squeue_recorded_cancelled_pending.txt")));
+  ASSERT_NE(find_task(q, "1157", 7), nullptr);
+  EXPECT_EQ(find_task(q, "1157", 7)->state, "CANCELLED");
+  EXPECT_EQ(find_task(q, "1157", 3)->state, "CANCELLED");
+  EXPECT_EQ(find_task(q, "1158", 0), nullptr);
+  const auto j = by_task(parse_jobcomp(data("jobcomp_recorded_cancelled_pending.txt")));
+  EXPECT_EQ(find_task(j, "1157", 0)->state, "COMPLETED");  // its own record
+  EXPECT_EQ(find_task(j, "1157", 9)->state, "CANCELLED");  // the meta record: no ArrayTaskId
+}
+
 TEST(SlurmOutput, SbatchAndConfig) {
   EXPECT_EQ(parse_sbatch_id("41\n"), "41");
   EXPECT_EQ(parse_sbatch_id("1234;cluster2\n"), "1234");

@@ -13,6 +13,7 @@ std::array<double, 2> DpForceField::list_diameters(const DpShape& shape) {
 DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const PolygonSet& p, const DpShape& shape,
                            double E_c)
     : shape_(shape),
+      edge_reach_(shape.max_edge),
       list_(c.skin),
       area_(p, shape, c.dp.K_a),
       segments_(p, shape, c.dp.K_l),
@@ -36,10 +37,19 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
 }
 
 ForceReport DpForceField::compute(ParticleState<2>& s) {
-  list_.update(s, hopper_);
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
   r.U_shape = area_.accumulate(s, s.f).energy + segments_.accumulate(s, s.f).energy + bending_.accumulate(s, s.f).energy;
+  // A vertex within delta of an edge is within |edge| + delta of the edge's start vertex: the
+  // list must reach that far for the longest edge of this very step. Soft segments (K_l ~ 1)
+  // stretch edges to several l0; a list that does not follow misses contacts and lets vertices
+  // through edges.
+  if (smooth_ && segments_.longest_edge() > edge_reach_) {
+    edge_reach_ = 1.25 * segments_.longest_edge();
+    s.sp.sigma = {edge_reach_ + shape_.delta[0], edge_reach_ + shape_.delta[1]};
+    list_.invalidate();
+  }
+  list_.update(s, hopper_);
   if (smooth_) {
     const TermOutput o = smooth_->accumulate(s, s.f);
     r.U_contact = o.energy;

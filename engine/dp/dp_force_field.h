@@ -39,6 +39,10 @@ class DpForceField {
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
   /// Longest edge at the last evaluation (bounds the smooth contact's reach).
   double longest_edge() const { return segments_.longest_edge(); }
+  /// The longest edge the smooth contact search covers now: shape.max_edge, grown (never
+  /// shrunk) whenever an edge stretches beyond it. Only the list's reach depends on it, not
+  /// the forces, so runs with different histories of it stay bit-identical.
+  double edge_reach() const { return edge_reach_; }
   /// area, segment length, bending, contact, walls, gravity, drag, wall corners
   std::vector<ForceTerm<2>*> terms();
   /// Where the largest contact overlap of the last evaluation is (for failure messages).
@@ -49,6 +53,7 @@ class DpForceField {
 
  private:
   const DpShape& shape_;
+  double edge_reach_;
   NeighborList<2> list_;
   DpArea area_;
   DpSegmentLength segments_;

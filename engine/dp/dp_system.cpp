@@ -92,10 +92,12 @@ void DpSystem::body_friction(VecArray<2>& out) {
 }
 
 void DpSystem::check_vertices(const ParticleState<2>& bodies, double t) const {
-  if (shape_.smooth && ff_->longest_edge() > shape_.max_edge) {
+  // The contact search follows stretched edges (DpForceField::edge_reach); an edge this long
+  // means the polygon is coming apart.
+  if (shape_.smooth && ff_->longest_edge() > kMaxEdgeStretch * shape_.l0[1]) {
     std::ostringstream m;
-    m << "a polygon edge stretched to " << ff_->longest_edge() << " (more than " << shape_.max_edge
-      << " = 2 l0 of the large species, the reach of the contact search) at t = " << t;
+    m << "a polygon edge stretched to " << ff_->longest_edge() << " (more than " << kMaxEdgeStretch
+      << " l0 of the large species) at t = " << t;
     throw InstabilityError(m.str());
   }
   // A vertex may wrap around an orifice corner by its contact radius; one a whole edge

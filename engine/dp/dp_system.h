@@ -50,6 +50,8 @@ class DpSystem {
   const DpShape& shape() const { return shape_; }
 
   static constexpr double kBodyMargin = 1.1;
+  /// An edge longer than this many l0 (large species) stops the run: the polygon is tearing.
+  static constexpr double kMaxEdgeStretch = 8.0;
 
  private:
   SimConfig c_;

@@ -23,6 +23,10 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     dir = Vec<2>(e[1] * inv_len, -e[0] * inv_len);  // outward normal (counter-clockwise polygon)
     d = q.dot(dir);
     if (d >= dmn || d <= -dmn) return;
+    if (d < 0) {  // behind the edge: the capsule pushes the vertex further behind it
+      d = -d;
+      dir = -dir;
+    }
     w_start = 1 - t;
     w_end = t;
   } else if (t < 0) {

@@ -3,9 +3,10 @@
 /// \brief Contacts of the smooth ("frictionless") DP model (physics.md 4, paper Appendix A):
 /// edge i of polygon m is a circulo-line of width delta_m; against vertex j of polygon n
 /// (m != n) the energy is (E_c/2)(1 - d/delta_mn)^2 for d < delta_mn with
-///  - d the perpendicular (signed, outward) distance (r_j - r_i) . nhat_i when the foot of r_j
-///    lies on the edge (0 <= t <= 1); the reaction -F on the edge is split between its end
-///    vertices by the lever rule, (1 - t) and t, which is the exact gradient;
+///  - d the perpendicular distance |(r_j - r_i) . nhat_i| when the foot of r_j lies on the edge
+///    (0 <= t <= 1): a capsule is symmetric, so a vertex behind an edge (in a concave pocket of
+///    a polygon wrapped around a corner) is as close as one in front; the reaction -F on the edge
+///    is split between its end vertices by the lever rule, (1 - t) and t, the exact gradient;
 ///  - d = |r_j - r_i| (the edge's start vertex) when the foot lies before the edge (t < 0).
 ///
 /// Decision (corner rule): the start-vertex branch applies only where r_j is also beyond the

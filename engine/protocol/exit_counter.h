@@ -34,7 +34,7 @@ class ExitCounter {
       const double h = s.x[i][kUp<D>];
       if (!s.exited[i]) {
         if (h >= 0) continue;
-        if (Hopper<D>::lateral(s.x[i]) > half_w)
+        if (Hopper<D>::lateral(s.x[i]) > half_w + slack_)
           throw InstabilityError("particle " + std::to_string(i) + " crossed the orifice plane through the wall at t = " +
                                  std::to_string(t));
         rec.exit_time.push_back(t);
@@ -48,10 +48,15 @@ class ExitCounter {
     }
   }
   const std::vector<int>& to_reinject() const { return to_reinject_; }
+  /// How far beyond the orifice edge a centre may cross the orifice plane and still count as an
+  /// exit. 0 for disks. A deformable polygon draped around an orifice corner can have its
+  /// centroid there (its vertices are checked against the walls one by one).
+  void set_lateral_slack(double slack) { slack_ = slack; }
 
  private:
   const Hopper<D>& hopper_;
   double drop_depth_;
+  double slack_ = 0;
   std::vector<int> to_reinject_;
 };
 

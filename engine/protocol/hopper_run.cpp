@@ -44,6 +44,7 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
     if (c_.is_dp()) {
       dp_ = std::make_unique<DpSystem>(c_, hopper_);
       bodies_list_ = std::make_unique<NeighborList<D>>(c_.skin);
+      exits_.set_lateral_slack(dp_->shape().bounding_diameter(1));
     }
   }
   rec_.exit_time.reserve(1 << 16);

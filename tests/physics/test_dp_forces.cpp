@@ -86,8 +86,8 @@ double brute_force_smooth_energy(const DpFixture& fx, double eps_c, int edges_of
       const double dmn = 0.5 * (fx.shape.delta[fx.verts.species[a]] + fx.shape.delta[fx.verts.species[b]]);
       double d;
       if (t >= 0 && t <= 1) {
-        d = (e[1] * q[0] - e[0] * q[1]) / e.norm();
-        if (std::fabs(d) >= dmn) continue;
+        d = std::fabs(e[1] * q[0] - e[0] * q[1]) / e.norm();
+        if (d >= dmn) continue;
       } else if (t < 0 && (x[b] - x[p.prev[a]]).dot(x[a] - x[p.prev[a]]) / (x[a] - x[p.prev[a]]).squaredNorm() > 1) {
         d = q.norm();
         if (d >= dmn) continue;
@@ -141,6 +141,28 @@ TEST(DpForces, RoughPolygonFoldedOntoItselfRepelsItsOwnVertices) {
   EXPECT_NEAR(e, 0.5 * fx.c.dp.E_c * 0.25, 1e-9 * e);
   EXPECT_LT((f[0] + f[5]).norm(), 1e-9 * f[0].norm());
   EXPECT_GT(f[0].dot(inward), 0);  // pushed away from vertex 5
+}
+
+TEST(DpForces, SmoothContactSearchFollowsStretchedEdges) {
+  // Soft segments stretch edges to several l0. A vertex near the far end of such an edge is
+  // farther from the edge's start vertex than the default list reach (2 l0 + delta + skin):
+  // the contact search must grow with the edge, or the vertex passes through the edge unseen.
+  DpFixture fx(dp_config("dp_smooth", 2), {Vec<2>(-3, 5), Vec<2>(3, 5)}, 0.0, 2);
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  const double l0 = fx.shape.l0[0];
+  const int a = 0, an = fx.poly.next[0];
+  fx.verts.x[an] = fx.verts.x[a] + 6 * l0 * (fx.verts.x[an] - fx.verts.x[a]).normalized();  // edge 0 -> 6 l0 (small)
+  const Vec<2> e = fx.verts.x[an] - fx.verts.x[a];
+  const Vec<2> normal(e[1] / e.norm(), -e[0] / e.norm());
+  const int b = fx.poly.first[1] + 3;  // a vertex of the other polygon, near the far end, outside
+  fx.verts.x[b] = fx.verts.x[a] + 0.95 * e + 0.5 * fx.shape.delta[0] * normal;
+  ASSERT_GT((fx.verts.x[b] - fx.verts.x[a]).norm(), fx.shape.max_edge + fx.shape.delta[0] + fx.c.skin);
+  const ForceReport r = ff.compute(fx.verts);
+  const double expected = brute_force_smooth_energy(fx, fx.c.dp.E_c);
+  ASSERT_GT(expected, 0);
+  EXPECT_NEAR(r.U_contact, expected, 1e-10 * expected);
+  EXPECT_GE(ff.edge_reach(), 6 * l0);
 }
 
 TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {

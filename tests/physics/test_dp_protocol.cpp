@@ -113,7 +113,7 @@ TEST(DpDynamics, FlowingRunConservesAreasAsTheAreaStiffnessDemands) {
 
 void check_softest_polygons_stay_simple(const char* model) {
   SimConfig c = flowing_dp(model, 1, 1e-2);
-  c.dp.E_c = c.E_w = 1e3;
+  c.dp.E_c = c.E_w = 1e4;
   c.resolve_and_validate();
   HopperRun<2> run(c, RunOptions{});
   run.prepare();
@@ -150,9 +150,13 @@ void check_softest_polygons_stay_simple(const char* model) {
 //  - rough, K_l = 1, K_b = 1e-2: vertices of one polygon now repel (self-contact), which took the
 //    self-intersecting samples from 12 to 3 of 35 x 90; the 3 left had an edge stretched to
 //    1.6-3.8 l0 (K_l = 1 is soft), wide enough for a vertex to slip between two vertex disks;
-//  - smooth, same settings: a polygon wrapped around an orifice corner lets a neighbour's
-//    vertex through its edge (overlap jumps to ~2 at the corner at t ~ 4-5), also at
-//    E_c = E_w = 1e3.
+//  - smooth, same settings, E_c = E_w = 1e4: three causes found and fixed (signed distance gave
+//    a false overlap of ~2 to a vertex behind an edge of a concave polygon; the contact search
+//    missed vertices near the far end of edges stretched beyond 2 l0; a draped polygon's centroid
+//    crossed the orifice plane just outside the orifice). What is left: the search now grows with
+//    the longest edge, for every vertex, which makes this run ~7x slower (7.5 min of CPU to
+//    t = 4), too slow for the default suite; next step: search from the nearer end of each edge
+//    (reach max_edge/2 + delta).
 TEST(DpDynamics, DISABLED_SoftestRoughPolygonsStaySimpleWhileFlowing) { check_softest_polygons_stay_simple("dp_rough"); }
 
 TEST(DpDynamics, DISABLED_SoftestSmoothPolygonsStaySimpleWhileFlowing) {

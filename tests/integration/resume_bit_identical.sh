@@ -26,6 +26,8 @@ kills=0
 for delay in 0.6 0.9; do
   "$BIN" simulate "$WORK/job.json" -o "$WORK/killed" --resume --progress quiet > /dev/null 2>&1 &
   pid=$!
+  # kill only once a checkpoint exists (a loaded machine may take longer than the delay to write one)
+  for _ in $(seq 600); do [ -f "$WORK/killed/checkpoint.h5" ] && break; sleep 0.1; done
   sleep "$delay"
   if kill -9 "$pid" 2>/dev/null; then kills=$((kills + 1)); fi
   wait "$pid" 2>/dev/null || true

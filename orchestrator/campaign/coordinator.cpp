@@ -64,13 +64,6 @@ Profile read_profile(const std::string& job_dir) {
   return {h5::read_doubles(g, "h"), h5::read_doubles(g, "v_g"), h5::read_doubles(g, "v_g_err")};
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string last_log_line(const std::string& job_dir) {
   std::ifstream in(fs::path(job_dir) / job_files::kLog);
   std::string line, last;
@@ -153,7 +146,7 @@ class Coordinator {
     const bool ours = outcome && outcome->token == job.token;
     if (ours && outcome->exit_code == exit_code::kOk) {
       const Profile p = read_profile(dir);
-      store_.ingest_success(job, read_text(fs::path(dir) / "summary.json"), p.h, p.v_g, p.v_g_err);
+      store_.ingest_success(job, job_files::read_text((fs::path(dir) / "summary.json").string()), p.h, p.v_g, p.v_g_err);
       log_event(job, "done", "");
       return;
     }

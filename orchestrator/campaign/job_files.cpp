@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "engine/io/h5.h"
 
@@ -49,6 +50,13 @@ void write_heartbeat(const std::string& job_dir, const Heartbeat& h) {
                             {"step", h.step},           {"pid", h.pid},   {"slurm_job", h.slurm_job},
                             {"slurm_restarts", h.slurm_restarts}};
   write_text_atomically((std::filesystem::path(job_dir) / kHeartbeat).string(), j.dump() + "\n");
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 bool lock_is_held(const std::string& job_dir) {

@@ -43,6 +43,8 @@ std::optional<Outcome> read_outcome(const std::string& job_dir);
 void write_outcome(const std::string& job_dir, const Outcome& o);
 std::optional<Heartbeat> read_heartbeat(const std::string& job_dir);
 void write_heartbeat(const std::string& job_dir, const Heartbeat& h);
+/// The whole file as text ("" if it cannot be read).
+std::string read_text(const std::string& path);
 /// True if some process holds the job's lock (a live worker).
 bool lock_is_held(const std::string& job_dir);
 

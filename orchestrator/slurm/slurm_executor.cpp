@@ -29,13 +29,6 @@ constexpr int kMaxJobsPerTask = 100;
 double steady_now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 double unix_now() { return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count(); }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string first_line(const std::string& text) {
   std::string s = text.substr(0, text.find('\n'));
   return s.empty() ? text : s;
@@ -213,7 +206,7 @@ std::string SlurmExecutor::find_lost_submission(const std::string& name) {
         if (r.name == name) return r.array_job_id;
   }
   if (!jobcomp_path_.empty())
-    for (const auto& r : slurm::parse_jobcomp(read_file(jobcomp_path_)))
+    for (const auto& r : slurm::parse_jobcomp(job_files::read_text(jobcomp_path_)))
       if (r.name == name) return r.array_job_id;
   return "";
 }
@@ -256,7 +249,7 @@ std::map<slurm::TaskKey, slurm::TaskRecord> SlurmExecutor::accounting(const std:
         commands_.run({"sacct", "-X", "-n", "-P", "-D", "-j", ids, std::string("--format=") + slurm::kSacctFields});
     if (r.rc == 0) records = slurm::parse_sacct(r.out);
   } else if (!jobcomp_path_.empty()) {
-    records = slurm::parse_jobcomp(read_file(jobcomp_path_));
+    records = slurm::parse_jobcomp(job_files::read_text(jobcomp_path_));
   }
   std::vector<slurm::TaskRecord> ours;
   for (const auto& r : records)  // job ids are reused after a clean restart: the random name decides

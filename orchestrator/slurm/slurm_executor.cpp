@@ -135,26 +135,27 @@ void SlurmExecutor::submit_chunk(const std::vector<ClaimedJob>& jobs, const std:
   // 1. the intent, before anything reaches Slurm: a coordinator killed from here on finds it
   std::vector<std::pair<std::int64_t, int>> attempt_tasks;
   nlohmann::json manifest_tasks = nlohmann::json::array();
+  std::vector<Tracked> watch;
   for (int t = 0; t < size; ++t) {
     nlohmann::json entries = nlohmann::json::array();
     for (std::size_t j : tasks[static_cast<std::size_t>(t)]) {
       attempt_tasks.emplace_back(jobs[j].attempt_id, t);
       entries.push_back({{"dir", jobs[j].dir}, {"token", jobs[j].token}});
+      Tracked tr;
+      tr.attempt_id = jobs[j].attempt_id;
+      tr.dir = (fs::path(dir_) / jobs[j].dir).string();
+      tr.token = jobs[j].token;
+      tr.task = t;
+      watch.push_back(tr);
     }
     manifest_tasks.push_back(entries);
   }
   const std::string script_rel = (fs::path("slurm") / name / "job.sh").string();
   const std::int64_t sub = store_.begin_submission(name, size, options_.throttle, script_rel, nlohmann::json(args).dump(), attempt_tasks);
   submission_names_[sub] = name;
-  for (const auto& [attempt, t] : attempt_tasks) {
-    const auto& job = *std::find_if(jobs.begin(), jobs.end(), [&](const ClaimedJob& j) { return j.attempt_id == attempt; });
-    Tracked tr;
-    tr.attempt_id = attempt;
-    tr.dir = (fs::path(dir_) / job.dir).string();
-    tr.token = job.token;
+  for (Tracked& tr : watch) {
     tr.submission = sub;
-    tr.task = t;
-    tracked_[attempt] = tr;
+    tracked_[tr.attempt_id] = tr;
   }
   // 2. the files the tasks read
   write_text_atomically((sub_dir / "manifest.json").string(),
@@ -283,11 +284,10 @@ std::vector<WorkerExit> SlurmExecutor::poll() {
   std::vector<WorkerExit> out;
   const double now = steady_now();
   if (now < next_poll_ || tracked_.empty()) return out;
+  std::set<std::string> arrays;
+  for (const auto& [id, t] : tracked_) arrays.insert(submission_names_[t.submission]);
   std::string names;
-  for (const auto& [id, t] : tracked_) {
-    const std::string& n = submission_names_[t.submission];
-    if (names.find(n) == std::string::npos) names += (names.empty() ? "" : ",") + n;
-  }
+  for (const std::string& n : arrays) names += (names.empty() ? "" : ",") + n;
   const slurm::CommandResult q = commands_.run(
       {"squeue", "--noheader", "--array", "--states=all", "--name=" + names, std::string("--format=") + slurm::kSqueueFormat});
   if (q.rc != 0) {  // no answer is no information: conclude nothing, ask again later

@@ -1,6 +1,5 @@
 # Helpers for the tests against the real one-node Slurm (scripts/slurm-ci.sh start must have run).
 source "$(dirname "$0")/../integration/lib.sh"
-# a campaign directory that compute "nodes" see by the same path (here: this machine)
 results() {  # every result, to the last bit, in key order
   sqlite3 "$1/campaign.sqlite" "SELECT job_key, status, printf('%!.17g|%!.17g|%!.17g', Q, Q_err, rho_n), exits_total, steps
                                FROM results ORDER BY job_key"

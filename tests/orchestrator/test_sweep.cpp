@@ -124,8 +124,8 @@ TEST(Sweep, JobKeysAreStableGoldenValues) {
   const auto jobs = expand({{"base", {{"N", 400}, {"W", 25}, {"E_sp", 100}}},
                             {"sweep", {{"product", {{{"lambda", {0, "inf"}}}, {{"w", {3, 8}}}}}}}});
   EXPECT_EQ(jobs[0].key.size(), 64u);
-  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.1.0");
-  EXPECT_EQ(jobs[0].key, "a059c7186cb8ca0e1404b99dbe5beaf65a3d8d1f41353d17645fdf381a38b264");
+  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.2.0");
+  EXPECT_EQ(jobs[0].key, "cecf1a532566a8a8fc2e634f23382af80ece0c55b95feea3db54ebcc7789c427");
 }
 
 TEST(Sweep, KeyIsSensitiveToEveryParameterButNotToRunBookkeeping) {

@@ -1,19 +1,18 @@
 #include "dp_force_field.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace beverloo {
 
 std::array<double, 2> DpForceField::list_diameters(const DpShape& shape) {
-  if (!shape.smooth) return {shape.delta[0], shape.delta[1]};  // vertex disks: contact = reach
-  // a vertex within delta_mn of an edge is within max_edge + delta_mn of the edge's start
-  return {shape.max_edge + shape.delta[0], shape.max_edge + shape.delta[1]};
+  return {shape.delta[0], shape.delta[1]};
 }
 
 DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const PolygonSet& p, const DpShape& shape,
                            double E_c)
     : shape_(shape),
-      edge_reach_(shape.max_edge),
+      poly_(p),
       list_(c.skin),
       area_(p, shape, c.dp.K_a),
       segments_(p, shape, c.dp.K_l),
@@ -25,6 +24,13 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       hopper_(hopper) {
   if (shape.smooth) {
     list_.set_groups(&p.owner);
+    // A vertex within delta_mn of an edge is within |edge|/2 + delta_mn of the edge's nearer end
+    // vertex (the foot of the perpendicular, or the corner itself, is at most |edge|/2 from it).
+    // Until the first compute() sees the edges: the floor of the large species, which covers
+    // near-regular polygons of both species (lists built directly, as some tests do).
+    edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
+    vertex_reach_.assign(p.vertices(), 0.5 * kEdgeBoundFloor * shape.l0[1]);
+    list_.set_extra_reach(&vertex_reach_);
     smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, c.mu);
   } else {
     // Rough: vertex disks of one polygon repel too, except neighbours along the ring (they
@@ -40,15 +46,9 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
   r.U_shape = area_.accumulate(s, s.f).energy + segments_.accumulate(s, s.f).energy + bending_.accumulate(s, s.f).energy;
-  // A vertex within delta of an edge is within |edge| + delta of the edge's start vertex: the
-  // list must reach that far for the longest edge of this very step. Soft segments (K_l ~ 1)
-  // stretch edges to several l0; a list that does not follow misses contacts and lets vertices
-  // through edges.
-  if (smooth_ && segments_.longest_edge() > edge_reach_) {
-    edge_reach_ = 1.25 * segments_.longest_edge();
-    s.sp.sigma = {edge_reach_ + shape_.delta[0], edge_reach_ + shape_.delta[1]};
-    list_.invalidate();
-  }
+  // The list must reach every edge of this very step: soft segments (K_l ~ 1) stretch edges to
+  // several l0, and a list that does not follow misses contacts and lets vertices through edges.
+  if (smooth_) update_edge_bounds(s);
   list_.update(s, hopper_);
   if (smooth_) {
     const TermOutput o = smooth_->accumulate(s, s.f);
@@ -66,6 +66,23 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
   r.U_gravity = gravity_.accumulate(s, s.f).energy;
   r.P_drag = drag_.accumulate(s, s.f).power;
   return r;
+}
+
+bool DpForceField::update_edge_bounds(const ParticleState<2>& s) {
+  const int n = poly_.vertices();
+  bool outgrown = false;
+  for (int i = 0; i < n && !outgrown; ++i)
+    outgrown = (s.x[poly_.next[i]] - s.x[i]).squaredNorm() > edge_bound_[i] * edge_bound_[i];
+  if (!outgrown) return false;
+  // Reset every bound (not only the outgrown one), so that bounds also shrink back after a
+  // stretched polygon relaxes; this happens rarely, and it costs one list rebuild.
+  for (int i = 0; i < n; ++i) {
+    const double len = (s.x[poly_.next[i]] - s.x[i]).norm();
+    edge_bound_[i] = std::max(kEdgeBoundGrowth * len, kEdgeBoundFloor * shape_.l0[s.species[i]]);
+  }
+  for (int i = 0; i < n; ++i) vertex_reach_[i] = 0.5 * std::max(edge_bound_[i], edge_bound_[poly_.prev[i]]);
+  list_.invalidate();
+  return true;
 }
 
 void DpForceField::set_dissipation(bool on) {

@@ -37,23 +37,34 @@ class DpForceField {
   NeighborList<2>& list() { return list_; }
   /// Kinetic-friction force on each vertex alone; overwrites out.
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
-  /// Longest edge at the last evaluation (bounds the smooth contact's reach).
+  /// Longest edge at the last evaluation.
   double longest_edge() const { return segments_.longest_edge(); }
-  /// The longest edge the smooth contact search covers now: shape.max_edge, grown (never
-  /// shrunk) whenever an edge stretches beyond it. Only the list's reach depends on it, not
-  /// the forces, so runs with different histories of it stay bit-identical.
-  double edge_reach() const { return edge_reach_; }
+  /// Smooth contact: the length up to which edge i is searched for contacts (from the nearer
+  /// of its end vertices, so vertex i's list reach is half the longer of its two edges'
+  /// bounds beyond its contact diameter). Bounds are set to kEdgeBoundGrowth times the edge's
+  /// length (at least kEdgeBoundFloor l0) whenever some edge outgrows its bound; only the
+  /// list's reach depends on them, not the forces, so any history of them gives bit-identical
+  /// forces.
+  double edge_bound(int edge) const { return edge_bound_[edge]; }
+  static constexpr double kEdgeBoundGrowth = 1.25;
+  static constexpr double kEdgeBoundFloor = 1.25;
   /// area, segment length, bending, contact, walls, gravity, drag, wall corners
   std::vector<ForceTerm<2>*> terms();
   /// Where the largest contact overlap of the last evaluation is (for failure messages).
   std::string describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const;
 
-  /// Vertex "diameters" for the Verlet list: its reach must cover every contact.
+  /// Vertex "diameters" for the Verlet list: the contact diameters; the smooth contact adds
+  /// each vertex's edge reach on top (NeighborList::set_extra_reach).
   static std::array<double, 2> list_diameters(const DpShape& shape);
 
  private:
+  /// Smooth contact: true (and the list invalidated) if some edge outgrew its bound.
+  bool update_edge_bounds(const ParticleState<2>& s);
+
   const DpShape& shape_;
-  double edge_reach_;
+  const PolygonSet& poly_;
+  std::vector<double> edge_bound_;    ///< per edge i -> next(i)
+  std::vector<double> vertex_reach_;  ///< per vertex: half the longer bound of its two edges
   NeighborList<2> list_;
   DpArea area_;
   DpSegmentLength segments_;

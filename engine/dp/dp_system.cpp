@@ -92,9 +92,9 @@ void DpSystem::body_friction(VecArray<2>& out) {
 }
 
 void DpSystem::check_vertices(const ParticleState<2>& bodies, double t) const {
-  // The contact search follows stretched edges (DpForceField::edge_reach); an edge this long
+  // The contact search follows stretched edges (DpForceField::edge_bound); an edge this long
   // means the polygon is coming apart.
-  if (shape_.smooth && ff_->longest_edge() > kMaxEdgeStretch * shape_.l0[1]) {
+  if (ff_->longest_edge() > kMaxEdgeStretch * shape_.l0[1]) {
     std::ostringstream m;
     m << "a polygon edge stretched to " << ff_->longest_edge() << " (more than " << kMaxEdgeStretch
       << " l0 of the large species) at t = " << t;

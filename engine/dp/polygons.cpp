@@ -19,7 +19,6 @@ DpShape DpShape::from_config(const SimConfig& c) {
     s.vertex_mass[k] = sp.mass[k] / nv;
     s.circumradius[k] = s.l0[k] / (2 * std::sin(units::pi / nv));
   }
-  s.max_edge = 2.0 * s.l0[1];
   return s;
 }
 

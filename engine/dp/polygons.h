@@ -23,9 +23,6 @@ struct DpShape {
   double delta[2]{};        ///< contact diameter: l0 (rough vertex disks) or 0.1 l0 (smooth edges)
   double vertex_mass[2]{};  ///< M / n_v
   double circumradius[2]{}; ///< of the regular reference polygon
-  /// Edges longer than this (stretching factor times the large species' l0) would let smooth
-  /// contacts escape the vertex Verlet list; the run stops with a reason instead.
-  double max_edge = 0;
   bool smooth = true;
 
   static DpShape from_config(const SimConfig& c);

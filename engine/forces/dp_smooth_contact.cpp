@@ -69,13 +69,25 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
 }
 
 template <DpSmoothContact::Mode kMode>
+void DpSmoothContact::edges_at_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy,
+                                      double& power, double& max_ov) const {
+  // The same expression for the same pair of points wherever it is evaluated, so that the
+  // nearer-end test of an edge gives one answer from either end (exactly one end counts it).
+  auto dist2 = [&](int u) { return (s.x[b] - s.x[u]).squaredNorm(); };
+  const double da = dist2(a);
+  if (da <= dist2(p_.next[a])) edge_vertex<kMode>(s, f, a, b, energy, power, max_ov);  // edge a -> next
+  const int ap = p_.prev[a];
+  if (da < dist2(ap)) edge_vertex<kMode>(s, f, ap, b, energy, power, max_ov);  // edge prev -> a
+}
+
+template <DpSmoothContact::Mode kMode>
 TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) const {
   double energy = 0, power = 0, max_ov = 0;
   const int n = s.size();
   for (int i = 0; i < n; ++i) {
     for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
-      edge_vertex<kMode>(s, f, i, *p, energy, power, max_ov);
-      edge_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
+      edges_at_vertex<kMode>(s, f, i, *p, energy, power, max_ov);
+      edges_at_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
     }
   }
   if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;

@@ -19,11 +19,14 @@
 /// F_j = -mu (v_j - v_P), v_P = (1 - t) v_i + t v_next(i), split on the edge by the lever rule
 /// (dissipative: power -mu |v_j - v_P|^2 per contact; momentum conserving).
 ///
-/// Every edge-vertex pair of different polygons within reach is found from the vertex Verlet
-/// list: a vertex within delta_mn of edge i is within |l_i| + delta_mn of its start vertex,
-/// and the list's reach (vertex "diameter" max_edge + delta) covers that. Each list pair (a, b)
-/// evaluates edge a against vertex b and edge b against vertex a, so every edge-vertex pair
-/// is counted exactly once.
+/// Every edge-vertex pair of different polygons in contact is found from the vertex Verlet
+/// list through the edge's nearer end vertex: a vertex within delta_mn of an edge is within
+/// |edge|/2 + delta_mn of that end (the foot of its perpendicular, or the corner, is at most
+/// half the edge away from it), and each vertex's list reach covers half its edges' bounds
+/// (DpForceField). A list pair (a, b) evaluates, for each of the two edges meeting at a, that
+/// edge against vertex b if a is the edge's end nearer to b (ties: the start vertex), and the
+/// same with a and b swapped; so every edge-vertex pair is counted exactly once, and a
+/// stretched edge widens the search only around its own vertices.
 #include <utility>
 
 #include "../dp/polygons.h"
@@ -50,6 +53,10 @@ class DpSmoothContact final : public ForceTerm<2> {
   enum class Mode { Repulsion, RepulsionAndFriction, FrictionOnly };
   template <Mode kMode>
   TermOutput loop(const ParticleState<2>& s, VecArray<2>& f) const;
+  /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.
+  template <Mode kMode>
+  void edges_at_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
+                       double& max_ov) const;
   template <Mode kMode>
   void edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
                    double& max_ov) const;

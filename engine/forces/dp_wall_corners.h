@@ -32,18 +32,19 @@ class DpWallCorners final : public ForceTerm<2> {
   std::string_view name() const override { return "dp_wall_corners"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0;
-    const double reach = shape_.max_edge + shape_.delta[1];
     const int nv = p_.vertices();
     for (int i = 0; i < nv; ++i) {
+      const int j = p_.next[i];
+      const Vec<2> e = s.x[j] - s.x[i];
+      const double e2 = e.squaredNorm();
+      const double half_delta = 0.05 * shape_.l0[s.species[i]];
       for (const Vec<2>& c : corners_) {
         const Vec<2> q = c - s.x[i];
-        if (q.squaredNorm() >= reach * reach) continue;
-        const int j = p_.next[i];
-        const Vec<2> e = s.x[j] - s.x[i];
-        const double e2 = e.squaredNorm();
+        // in the slab (0 <= t <= 1) and within half_delta of the line: |q|^2 <= |e|^2 + half_delta^2,
+        // whatever the edge's length (soft edges stretch to several l0)
+        if (q.squaredNorm() >= e2 + half_delta * half_delta) continue;
         const double t = q.dot(e) / e2;
         if (t < 0 || t > 1) continue;  // beyond the ends: the vertices' own wall contact
-        const double half_delta = 0.05 * shape_.l0[s.species[i]];
         const double len = std::sqrt(e2);
         const Vec<2> n(e[1] / len, -e[0] / len);  // outward normal
         const double d = q.dot(n);                 // corner outside the polygon: d > 0

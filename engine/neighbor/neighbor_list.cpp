@@ -35,7 +35,10 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     lo = lo.cwiseMin(s.x[i]);
     hi = hi.cwiseMax(s.x[i]);
   }
-  double cell = std::max(s.sp.sigma[0], s.sp.sigma[1]) + skin_;
+  double max_extra = 0;
+  if (extra_)
+    for (int i = 0; i < n; ++i) max_extra = std::max(max_extra, (*extra_)[i]);
+  double cell = std::max(s.sp.sigma[0], s.sp.sigma[1]) + 2 * max_extra + skin_;
   std::array<int, 3> dims{1, 1, 1};
   long total = 1;
   for (;;) {  // a blown-up particle far away must not make the grid huge: coarsen instead
@@ -74,6 +77,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     row_start_[i] = static_cast<int>(nbr_.size());
     const Vec<D> xi = s.x[i];
     const int si = s.species[i];
+    const double extra_i = extra(i);
     // decode cell coordinates of i
     int ci[3] = {0, 0, 0};
     int c = cell_of_[i];
@@ -91,7 +95,12 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
           for (int k = cell_start_[cc]; k < cell_start_[cc + 1]; ++k) {
             const int j = cell_items_[k];
             if (j <= i || excluded(i, j)) continue;
-            if ((xi - s.x[j]).squaredNorm() < cut2[si][s.species[j]]) nbr_.push_back(j);
+            if (extra_) {
+              const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + extra_i + (*extra_)[j] + skin_;
+              if ((xi - s.x[j]).squaredNorm() < c * c) nbr_.push_back(j);
+            } else if ((xi - s.x[j]).squaredNorm() < cut2[si][s.species[j]]) {
+              nbr_.push_back(j);
+            }
           }
         }
     std::sort(nbr_.begin() + row_start_[i], nbr_.end());
@@ -128,7 +137,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
   const int si = s.species[i];
   for (int j = 0; j < n; ++j) {
     if (j == i || excluded(i, j)) continue;
-    const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + skin_;
+    const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + extra(i) + extra(j) + skin_;
     if ((x_ref_[i] - x_ref_[j]).squaredNorm() >= c * c) continue;
     const int row = std::min(i, j), other = std::max(i, j);
     if (row_end_[row] == row_start_[row + 1]) {  // no room left: rebuild at the next update

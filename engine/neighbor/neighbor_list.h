@@ -38,6 +38,14 @@ class NeighborList {
     exclude_ring_ = first ? ring : -1;
     force_ = true;
   }
+  /// Per-item extra reach (nullptr: none): pairs are listed within sigma_ij + extra_i +
+  /// extra_j + skin. The smooth DP contact finds an edge from the nearer of its end vertices,
+  /// so each vertex reaches half its longest edge further than its contact diameter. The
+  /// vector must outlive the list; whoever changes it must invalidate() the list.
+  void set_extra_reach(const std::vector<double>* extra) {
+    extra_ = extra;
+    force_ = true;
+  }
   /// Forces the next update() to rebuild.
   void invalidate() { force_ = true; }
   /// Particle i was moved far (reinjection): take it out of the list and put it back at its
@@ -73,6 +81,8 @@ class NeighborList {
   const std::vector<int>* group_ = nullptr;
   const std::vector<int>* first_ = nullptr;
   int exclude_ring_ = -1;
+  const std::vector<double>* extra_ = nullptr;
+  double extra(int i) const { return extra_ ? (*extra_)[i] : 0.0; }
   bool force_ = true;
   std::int64_t builds_ = 0;
   VecArray<D> x_ref_;

@@ -145,8 +145,8 @@ TEST(DpForces, RoughPolygonFoldedOntoItselfRepelsItsOwnVertices) {
 
 TEST(DpForces, SmoothContactSearchFollowsStretchedEdges) {
   // Soft segments stretch edges to several l0. A vertex near the far end of such an edge is
-  // farther from the edge's start vertex than the default list reach (2 l0 + delta + skin):
-  // the contact search must grow with the edge, or the vertex passes through the edge unseen.
+  // farther from both end vertices than the list reach of regular polygons: the contact
+  // search must grow with the edge, or the vertex passes through the edge unseen.
   DpFixture fx(dp_config("dp_smooth", 2), {Vec<2>(-3, 5), Vec<2>(3, 5)}, 0.0, 2);
   const Hopper<2> h = make_hopper<2>(fx.c);
   DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
@@ -155,14 +155,17 @@ TEST(DpForces, SmoothContactSearchFollowsStretchedEdges) {
   fx.verts.x[an] = fx.verts.x[a] + 6 * l0 * (fx.verts.x[an] - fx.verts.x[a]).normalized();  // edge 0 -> 6 l0 (small)
   const Vec<2> e = fx.verts.x[an] - fx.verts.x[a];
   const Vec<2> normal(e[1] / e.norm(), -e[0] / e.norm());
-  const int b = fx.poly.first[1] + 3;  // a vertex of the other polygon, near the far end, outside
-  fx.verts.x[b] = fx.verts.x[a] + 0.95 * e + 0.5 * fx.shape.delta[0] * normal;
-  ASSERT_GT((fx.verts.x[b] - fx.verts.x[a]).norm(), fx.shape.max_edge + fx.shape.delta[0] + fx.c.skin);
+  const int b = fx.poly.first[1] + 3;  // a vertex of the other polygon, mid-edge (3 l0 from both ends), outside
+  fx.verts.x[b] = fx.verts.x[a] + 0.5 * e + 0.5 * fx.shape.delta[0] * normal;
+  const double regular_reach = DpForceField::kEdgeBoundFloor * fx.shape.l0[1] + fx.shape.delta[0] + fx.c.skin;
+  ASSERT_GT((fx.verts.x[b] - fx.verts.x[a]).norm(), regular_reach);
+  ASSERT_GT((fx.verts.x[b] - fx.verts.x[an]).norm(), regular_reach);
   const ForceReport r = ff.compute(fx.verts);
   const double expected = brute_force_smooth_energy(fx, fx.c.dp.E_c);
   ASSERT_GT(expected, 0);
   EXPECT_NEAR(r.U_contact, expected, 1e-10 * expected);
-  EXPECT_GE(ff.edge_reach(), 6 * l0);
+  EXPECT_GE(ff.edge_bound(a), 6 * l0);
+  EXPECT_LT(ff.edge_bound(fx.poly.first[1]), 2 * l0);  // the other polygon's edges keep their reach
 }
 
 TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {

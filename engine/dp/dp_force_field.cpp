@@ -23,14 +23,12 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       corners_(hopper, p, shape, c.E_w),
       hopper_(hopper) {
   if (shape.smooth) {
-    list_.set_groups(&p.owner);
-    // A vertex within delta_mn of an edge is within |edge|/2 + delta_mn of the edge's nearer end
-    // vertex (the foot of the perpendicular, or the corner itself, is at most |edge|/2 from it).
-    // Until the first compute() sees the edges: the floor of the large species, which covers
-    // near-regular polygons of both species (lists built directly, as some tests do).
-    edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
-    vertex_reach_.assign(p.vertices(), 0.5 * kEdgeBoundFloor * shape.l0[1]);
-    list_.set_extra_reach(&vertex_reach_);
+    // Edges of one polygon repel its own vertices too (self-contact; not ring neighbours, whose
+    // edges meet at them): nothing else keeps a soft polygon (K_l ~ 1, K_b ~ 1e-2) from folding
+    // through itself, and the area term cannot notice, as a tangled polygon can keep its signed
+    // area. At rest vertices two apart lie beyond both ends of each other's edges, so this acts
+    // only on a folding polygon. Not in the paper: docs/validation.md.
+    list_.set_groups(&p.owner, &p.first, 1);
     smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, c.mu);
   } else {
     // Rough: vertex disks of one polygon repel too, except neighbours along the ring (they
@@ -39,7 +37,20 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     // bending (K_b ~ 1e-2) otherwise lets happen. Not in the paper: docs/validation.md.
     list_.set_groups(&p.owner, &p.first, 1);
     rough_ = std::make_unique<SpContact<2>>(list_, E_c, c.mu);
+    rough_->set_friction_groups(&p.owner);
+    rough_core_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_edge_core(list_, p, shape, E_c));
+    // the disks' list reach (l0) already covers a core contact within l0 - l0/2 of a vertex
+    const auto core = DpSmoothContact::core_widths(shape);
+    reach_covered_ = std::min(shape.delta[0] - core[0], shape.delta[1] - core[1]);
   }
+  // A vertex within the edge width of an edge is within |edge|/2 of the edge's nearer end
+  // vertex plus that width (the foot of the perpendicular, or the corner, is at most |edge|/2
+  // from it): each vertex's list reach covers half the bound of its edges. Until the first
+  // compute() sees the edges: the floor of the large species, which covers near-regular
+  // polygons of both species (lists built directly, as some tests do).
+  edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
+  vertex_reach_.assign(p.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape.l0[1] - reach_covered_));
+  list_.set_extra_reach(&vertex_reach_);
 }
 
 ForceReport DpForceField::compute(ParticleState<2>& s) {
@@ -48,7 +59,7 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
   r.U_shape = area_.accumulate(s, s.f).energy + segments_.accumulate(s, s.f).energy + bending_.accumulate(s, s.f).energy;
   // The list must reach every edge of this very step: soft segments (K_l ~ 1) stretch edges to
   // several l0, and a list that does not follow misses contacts and lets vertices through edges.
-  if (smooth_) update_edge_bounds(s);
+  update_edge_bounds(s);
   list_.update(s, hopper_);
   if (smooth_) {
     const TermOutput o = smooth_->accumulate(s, s.f);
@@ -57,9 +68,9 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.max_overlap = smooth_->max_overlap();
   } else {
     const TermOutput o = rough_->accumulate(s, s.f);
-    r.U_contact = o.energy;
+    r.U_contact = o.energy + rough_core_->accumulate(s, s.f).energy;
     r.P_friction = o.power;
-    r.max_overlap = rough_->max_overlap();
+    r.max_overlap = std::max(rough_->max_overlap(), rough_core_->max_overlap());
   }
   r.U_wall = walls_.accumulate(s, s.f).energy;
   r.U_wall += corners_.accumulate(s, s.f).energy;
@@ -80,7 +91,8 @@ bool DpForceField::update_edge_bounds(const ParticleState<2>& s) {
     const double len = (s.x[poly_.next[i]] - s.x[i]).norm();
     edge_bound_[i] = std::max(kEdgeBoundGrowth * len, kEdgeBoundFloor * shape_.l0[s.species[i]]);
   }
-  for (int i = 0; i < n; ++i) vertex_reach_[i] = 0.5 * std::max(edge_bound_[i], edge_bound_[poly_.prev[i]]);
+  for (int i = 0; i < n; ++i)
+    vertex_reach_[i] = std::max(0.0, 0.5 * std::max(edge_bound_[i], edge_bound_[poly_.prev[i]]) - reach_covered_);
   list_.invalidate();
   return true;
 }
@@ -99,8 +111,10 @@ void DpForceField::friction_forces(const ParticleState<2>& s, VecArray<2>& out) 
 }
 
 std::string DpForceField::describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const {
-  if (!smooth_) return "";
-  const auto [vertex, edge] = smooth_->worst_contact();
+  // the smooth contact, or the rough edge core if its overlap is the larger (rough disks: no detail)
+  const DpSmoothContact* edges = smooth_ ? smooth_.get() : rough_core_.get();
+  if (!smooth_ && rough_core_->max_overlap() < rough_->max_overlap()) return "";
+  const auto [vertex, edge] = edges->worst_contact();
   if (vertex < 0) return "";
   std::ostringstream m;
   m << " (vertex " << vertex << " of polygon " << p.owner[vertex] << " at " << s.x[vertex].transpose() << " against the edge from vertex "
@@ -109,8 +123,8 @@ std::string DpForceField::describe_worst_contact(const ParticleState<2>& s, cons
 }
 
 std::vector<ForceTerm<2>*> DpForceField::terms() {
-  ForceTerm<2>* contact = smooth_ ? static_cast<ForceTerm<2>*>(smooth_.get()) : rough_.get();
-  return {&area_, &segments_, &bending_, contact, &walls_, &gravity_, &drag_, &corners_};
+  if (smooth_) return {&area_, &segments_, &bending_, smooth_.get(), &walls_, &gravity_, &drag_, &corners_};
+  return {&area_, &segments_, &bending_, rough_.get(), &walls_, &gravity_, &drag_, &corners_, rough_core_.get()};
 }
 
 }  // namespace beverloo

@@ -39,16 +39,18 @@ class DpForceField {
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
   /// Longest edge at the last evaluation.
   double longest_edge() const { return segments_.longest_edge(); }
-  /// Smooth contact: the length up to which edge i is searched for contacts (from the nearer
-  /// of its end vertices, so vertex i's list reach is half the longer of its two edges'
-  /// bounds beyond its contact diameter). Bounds are set to kEdgeBoundGrowth times the edge's
+  /// The length up to which edge i is searched for contacts of the smooth edges or the rough
+  /// edge core, from the nearer of its end vertices: vertex i's list reach is half the longer
+  /// of its two edges' bounds beyond the edge width (for rough vertex disks, only what that
+  /// exceeds the disk's reach). Bounds are set to kEdgeBoundGrowth times the edge's
   /// length (at least kEdgeBoundFloor l0) whenever some edge outgrows its bound; only the
   /// list's reach depends on them, not the forces, so any history of them gives bit-identical
   /// forces.
   double edge_bound(int edge) const { return edge_bound_[edge]; }
   static constexpr double kEdgeBoundGrowth = 1.25;
   static constexpr double kEdgeBoundFloor = 1.25;
-  /// area, segment length, bending, contact, walls, gravity, drag, wall corners
+  /// area, segment length, bending, contact, walls, gravity, drag, wall corners (rough: and
+  /// the edge core)
   std::vector<ForceTerm<2>*> terms();
   /// Where the largest contact overlap of the last evaluation is (for failure messages).
   std::string describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const;
@@ -58,19 +60,21 @@ class DpForceField {
   static std::array<double, 2> list_diameters(const DpShape& shape);
 
  private:
-  /// Smooth contact: true (and the list invalidated) if some edge outgrew its bound.
+  /// True (and the list invalidated) if some edge outgrew its bound.
   bool update_edge_bounds(const ParticleState<2>& s);
 
   const DpShape& shape_;
   const PolygonSet& poly_;
   std::vector<double> edge_bound_;    ///< per edge i -> next(i)
-  std::vector<double> vertex_reach_;  ///< per vertex: half the longer bound of its two edges
+  std::vector<double> vertex_reach_;  ///< per vertex: extra list reach for its two edges
+  double reach_covered_ = 0;          ///< edge reach the list's vertex diameters already give
   NeighborList<2> list_;
   DpArea area_;
   DpSegmentLength segments_;
   DpBending bending_;
   std::unique_ptr<DpSmoothContact> smooth_;
   std::unique_ptr<SpContact<2>> rough_;
+  std::unique_ptr<DpSmoothContact> rough_core_;
   HopperWalls<2> walls_;
   Gravity<2> gravity_;
   Drag<2> drag_;

@@ -85,6 +85,20 @@ void DpSystem::reinject(int m, const Vec<2>& centre, const Vec<2>& velocity, dou
   for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) ff_->list().relocate(i, verts_, hopper_);
 }
 
+bool DpSystem::spot_is_free(int m, const Vec<2>& centre) const {
+  // The regular polygon lies within its circumradius; its contact shell reaches delta/2
+  // beyond (for rough disks, beyond its vertices), and the other polygon's shell as far.
+  const int sm = verts_.species[poly_.first[m]];
+  for (int i = 0; i < verts_.size(); ++i) {
+    if (poly_.owner[i] == m) continue;
+    const double reach = shape_.circumradius[sm] + 0.5 * (shape_.delta[sm] + shape_.delta[verts_.species[i]]);
+    const Vec<2> a = verts_.x[i], e = verts_.x[poly_.next[i]] - a, q = centre - a;
+    const double t = std::clamp(q.dot(e) / e.squaredNorm(), 0.0, 1.0);
+    if ((q - t * e).squaredNorm() < reach * reach) return false;
+  }
+  return true;
+}
+
 void DpSystem::body_friction(VecArray<2>& out) {
   ff_->friction_forces(verts_, vertex_scratch_);
   out.assign(c_.N, Vec<2>::Zero());

@@ -37,6 +37,9 @@ class DpSystem {
   void sync_bodies(ParticleState<2>& bodies) const;
   /// Polygon m becomes a regular reference polygon at `centre` moving with `velocity`.
   void reinject(int m, const Vec<2>& centre, const Vec<2>& velocity, double angle);
+  /// True if polygon m, placed at `centre` in any orientation, would touch no edge or vertex
+  /// of another polygon. O(vertices); called for reinjection candidates only.
+  bool spot_is_free(int m, const Vec<2>& centre) const;
   /// Friction force on each body: the sum over its vertices.
   void body_friction(VecArray<2>& out);
   /// Throws InstabilityError if an edge outgrew the contact list's reach or a vertex of a

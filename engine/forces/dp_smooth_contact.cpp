@@ -15,7 +15,7 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
   const Vec<2> q = s.x[b] - ra;
   const double e2 = e.squaredNorm();
   const double t = q.dot(e) / e2;
-  const double dmn = 0.5 * (shape_.delta[s.species[a]] + shape_.delta[s.species[b]]);
+  const double dmn = 0.5 * (width_[s.species[a]] + width_[s.species[b]]);
   double d, w_start, w_end;  // distance; lever weights of the edge's start and end vertices
   Vec<2> dir;                // unit vector along which d grows when vertex b moves
   if (t >= 0 && t <= 1) {
@@ -29,7 +29,7 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     }
     w_start = 1 - t;
     w_end = t;
-  } else if (t < 0) {
+  } else if (t < 0 && corners_) {
     // Inside the previous edge's slab (t_prev <= 1) the previous edge has the contact. t_prev
     // is computed with the very operations of that edge's own test, so that exactly one of the
     // two branches holds on the boundary.
@@ -43,7 +43,7 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     w_start = 1;
     w_end = 0;
   } else {
-    return;  // beyond the end: the next edge's start vertex (its wedge) or its slab
+    return;  // beyond the end: the next edge's start vertex (its wedge) or its slab; or no corners
   }
   if constexpr (kMode != Mode::FrictionOnly) {
     double dU_dd;
@@ -59,6 +59,7 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     f[an] -= w_end * fb;
   }
   if constexpr (kMode != Mode::Repulsion) {
+    if (p_.owner[a] == p_.owner[b]) return;  // kinetic friction acts between particles only
     const Vec<2> rel = s.v[b] - (w_start * s.v[a] + w_end * s.v[an]);
     const Vec<2> ff = -mu_ * rel;
     power += ff.dot(rel);
@@ -75,9 +76,11 @@ void DpSmoothContact::edges_at_vertex(const ParticleState<2>& s, VecArray<2>& f,
   // nearer-end test of an edge gives one answer from either end (exactly one end counts it).
   auto dist2 = [&](int u) { return (s.x[b] - s.x[u]).squaredNorm(); };
   const double da = dist2(a);
-  if (da <= dist2(p_.next[a])) edge_vertex<kMode>(s, f, a, b, energy, power, max_ov);  // edge a -> next
-  const int ap = p_.prev[a];
-  if (da < dist2(ap)) edge_vertex<kMode>(s, f, ap, b, energy, power, max_ov);  // edge prev -> a
+  // A vertex one place beyond an edge's end (b = next(next(a)) or prev(prev(a)) of the same
+  // polygon) is the fold loop's (the list leaves out its pair with that end).
+  const int an = p_.next[a], ap = p_.prev[a];
+  if (b != p_.next[an] && da <= dist2(an)) edge_vertex<kMode>(s, f, a, b, energy, power, max_ov);  // edge a -> next
+  if (b != p_.prev[ap] && da < dist2(ap)) edge_vertex<kMode>(s, f, ap, b, energy, power, max_ov);  // edge prev -> a
 }
 
 template <DpSmoothContact::Mode kMode>
@@ -89,6 +92,15 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
       edges_at_vertex<kMode>(s, f, i, *p, energy, power, max_ov);
       edges_at_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
     }
+  }
+  // Folds: each edge against the vertex one place beyond either of its ends, of its own polygon
+  // (at rest beyond the edge's end, so nothing; they meet only where the polygon folds back on
+  // itself at the shared vertex, which soft bending allows). Not for the rough core: without
+  // end caps its energy would jump where such a vertex, always within one (compressible) edge
+  // of the shared vertex, leaves the slab; the smooth width (0.1 l0) is far below that edge.
+  for (int k = 0; corners_ && k < n; ++k) {
+    edge_vertex<kMode>(s, f, p_.prev[k], p_.next[k], energy, power, max_ov);  // edge prev(k) -> k
+    edge_vertex<kMode>(s, f, k, p_.prev[k], energy, power, max_ov);           // edge k -> next(k)
   }
   if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;
   return {energy, power};

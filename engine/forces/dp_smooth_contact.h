@@ -2,7 +2,7 @@
 /// \file dp_smooth_contact.h
 /// \brief Contacts of the smooth ("frictionless") DP model (physics.md 4, paper Appendix A):
 /// edge i of polygon m is a circulo-line of width delta_m; against vertex j of polygon n
-/// (m != n) the energy is (E_c/2)(1 - d/delta_mn)^2 for d < delta_mn with
+/// (m != n; and m = n, see self-contact below) the energy is (E_c/2)(1 - d/delta_mn)^2 for d < delta_mn with
 ///  - d the perpendicular distance |(r_j - r_i) . nhat_i| when the foot of r_j lies on the edge
 ///    (0 <= t <= 1): a capsule is symmetric, so a vertex behind an edge (in a concave pocket of
 ///    a polygon wrapped around a corner) is as close as one in front; the reaction -F on the edge
@@ -19,7 +19,12 @@
 /// F_j = -mu (v_j - v_P), v_P = (1 - t) v_i + t v_next(i), split on the edge by the lever rule
 /// (dissipative: power -mu |v_j - v_P|^2 per contact; momentum conserving).
 ///
-/// Every edge-vertex pair of different polygons in contact is found from the vertex Verlet
+/// Self-contact (a decision, not in the paper): the edges of a polygon also repel its own
+/// vertices, except the two ring neighbours of the edge's ends, without friction. At rest these
+/// lie beyond the ends of each other's edges, so only a folding polygon feels it; it keeps soft
+/// polygons (K_l ~ 1, K_b ~ 1e-2) simple.
+///
+/// Every edge-vertex pair in contact is found from the vertex Verlet
 /// list through the edge's nearer end vertex: a vertex within delta_mn of an edge is within
 /// |edge|/2 + delta_mn of that end (the foot of its perpendicular, or the corner, is at most
 /// half the edge away from it), and each vertex's list reach covers half its edges' bounds
@@ -27,6 +32,7 @@
 /// edge against vertex b if a is the edge's end nearer to b (ties: the start vertex), and the
 /// same with a and b swapped; so every edge-vertex pair is counted exactly once, and a
 /// stretched edge widens the search only around its own vertices.
+#include <array>
 #include <utility>
 
 #include "../dp/polygons.h"
@@ -37,9 +43,26 @@ namespace beverloo {
 
 class DpSmoothContact final : public ForceTerm<2> {
  public:
+  /// The smooth model's contact: edges of width shape.delta, with corners and friction.
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c, double mu)
-      : list_(list), p_(p), shape_(shape), eps_(E_c), mu_(mu) {}
-  std::string_view name() const override { return "dp_smooth_contact"; }
+      : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, mu, true, "dp_smooth_contact") {}
+  /// The rough model's edge core: each edge a circulo-line of width l0/2 (half the vertex
+  /// disks'), slabs only (the disks hold the corners), no friction, and energy scale E_c/4 so
+  /// that its stiffness per unit overlap, E/width^2, is the disks' (the time step stays the
+  /// same). A foreign disk resting in the cusp between two disks of an unstretched edge is
+  /// 0.87 l0 from the edge, so the core does not act there; it acts where a soft edge has
+  /// stretched (K_l ~ 1: seen to 3.8 l0) far enough for a vertex, of another polygon or of
+  /// the edge's own, to slip between two disks, and keeps such polygons simple. Not in the
+  /// paper: docs/validation.md.
+  static DpSmoothContact rough_edge_core(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
+                                         double E_c) {
+    return DpSmoothContact(list, p, core_widths(shape), kRoughCoreEnergyFraction * E_c, 0.0, false,
+                           "dp_rough_edge_core");
+  }
+  static std::array<double, 2> core_widths(const DpShape& shape) { return {0.5 * shape.l0[0], 0.5 * shape.l0[1]}; }
+  static constexpr double kRoughCoreEnergyFraction = 0.25;
+
+  std::string_view name() const override { return name_; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override;
   /// Friction force on each vertex alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
@@ -61,10 +84,16 @@ class DpSmoothContact final : public ForceTerm<2> {
   void edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
                    double& max_ov) const;
 
+  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c, double mu,
+                  bool corners, const char* name)
+      : list_(list), p_(p), width_(width), eps_(E_c), mu_(mu), corners_(corners), name_(name) {}
+
   const NeighborList<2>& list_;
   const PolygonSet& p_;
-  const DpShape& shape_;
+  std::array<double, 2> width_;  ///< edge (and vertex) contact width per species
   double eps_, mu_;
+  bool corners_;  ///< false: slabs only (the rough core)
+  const char* name_;
   bool friction_on_ = true;
   // written by the evaluation loop, which friction_forces() (const) shares
   mutable double max_overlap_ = 0;

@@ -37,9 +37,11 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
       max_ov = ov > max_ov ? ov : max_ov;
       Vec<D> fij = (-dU_dr / r) * dx;  // on i, along x_i - x_j (repulsive)
       if constexpr (kFriction) {
-        const Vec<D> ff = kinetic_friction_force<D>(mu_, s.v[i], s.v[j]);
-        power += ff.dot(s.v[i] - s.v[j]);
-        fij += ff;
+        if (rubs(i, j)) {
+          const Vec<D> ff = kinetic_friction_force<D>(mu_, s.v[i], s.v[j]);
+          power += ff.dot(s.v[i] - s.v[j]);
+          fij += ff;
+        }
       }
       fi += fij;
       f[j] -= fij;
@@ -63,7 +65,7 @@ void SpContact<D>::friction_forces(const ParticleState<D>& s, VecArray<D>& out) 
     for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
       const int j = *p;
       const double sig = 0.5 * (s.sigma(i) + s.sigma(j));
-      if ((s.x[i] - s.x[j]).squaredNorm() >= sig * sig) continue;
+      if ((s.x[i] - s.x[j]).squaredNorm() >= sig * sig || !rubs(i, j)) continue;
       const Vec<D> ff = kinetic_friction_force<D>(mu_, s.v[i], s.v[j]);
       out[i] += ff;
       out[j] -= ff;

@@ -7,6 +7,8 @@
 /// distance test; a second loop over the list would double the memory traffic of the hottest
 /// loop. The parts stay separately testable: with v = 0 only the repulsion acts, and
 /// friction_forces() gives the friction alone.
+#include <vector>
+
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
 
@@ -21,6 +23,9 @@ class SpContact final : public ForceTerm<D> {
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<D>& s, VecArray<D>& out) const;
   void set_friction_enabled(bool on) { friction_on_ = on; }
+  /// Pairs of one group (vertices of one rough polygon in self-contact) repel but do not rub:
+  /// kinetic friction acts between particles (physics.md 4). nullptr: every pair rubs.
+  void set_friction_groups(const std::vector<int>* group) { friction_group_ = group; }
   /// Largest relative overlap 1 - r/sigma_mn seen in the last accumulate().
   double max_overlap() const { return max_overlap_; }
   double mu() const { return mu_; }
@@ -32,6 +37,8 @@ class SpContact final : public ForceTerm<D> {
   const NeighborList<D>& list_;
   double eps_, mu_;
   bool friction_on_ = true;
+  const std::vector<int>* friction_group_ = nullptr;
+  bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
   double max_overlap_ = 0;
 };
 

@@ -45,6 +45,7 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       dp_ = std::make_unique<DpSystem>(c_, hopper_);
       bodies_list_ = std::make_unique<NeighborList<D>>(c_.skin);
       exits_.set_lateral_slack(dp_->shape().bounding_diameter(1));
+      reinjector_.set_extra_test([this](int m, const Vec<D>& centre) { return dp_->spot_is_free(m, centre); });
     }
   }
   rec_.exit_time.reserve(1 << 16);

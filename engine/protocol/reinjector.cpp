@@ -21,7 +21,7 @@ bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, i
     const double tol = k == touching ? 1.0 - 1e-12 : 1.0;
     if ((p - s.x[k]).squaredNorm() < sig * sig * tol) return false;
   }
-  return true;
+  return !extra_test_ || extra_test_(i, p);
 }
 
 template <int D>

@@ -8,6 +8,7 @@
 /// pile's highest particle, the direction uniformly from the upper half circle (2D) or hemisphere (3D). If
 /// `max_attempts` draws all collide, the particle is dropped just above the pile instead
 /// (counted as a fallback, so that a run can report how often that happened).
+#include <functional>
 #include <vector>
 
 #include "../config.h"
@@ -28,11 +29,15 @@ class Reinjector {
   bool reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& in_pile);
   /// True if particle i at position p overlaps no other particle and no wall.
   bool is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching) const;
+  /// A further test of a spot that the body disks find free (DP: the polygons' own edges,
+  /// which a stretched soft polygon pushes beyond its body disk). Empty: none.
+  void set_extra_test(std::function<bool(int, const Vec<D>&)> test) { extra_test_ = std::move(test); }
 
  private:
   const Hopper<D>& hopper_;
   ReinjectionParams p_;
   std::vector<int> candidates_;
+  std::function<bool(int, const Vec<D>&)> extra_test_;
 };
 
 }  // namespace beverloo

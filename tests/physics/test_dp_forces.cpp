@@ -11,14 +11,22 @@ namespace {
 using testing::DpFixture;
 using testing::dp_config;
 
+/// Polygons pressed together: neighbours' centres closer than their diameters.
+std::vector<Vec<2>> cluster() {
+  return {{-0.9, 3.0}, {0.05, 3.05}, {1.0, 2.95}, {-0.45, 3.85}, {0.5, 3.9}, {0.0, 2.1}, {-4.5, 0.55}, {4.2, 2.0}};
+}
+
 /// Central differences of every conservative term for every vertex coordinate.
 void check_gradients(DpFixture& fx, int min_terms_with_energy) {
-  fx.verts.x[fx.poly.first[6]] = Vec<2>(-4.5, 0.005);  // on the floor, inside the wall's reach
-  fx.verts.x[fx.poly.first[7] + 4] = Vec<2>(5.997, 2.3);  // on the side wall
+  if (fx.poly.polygons() == int(cluster().size())) {
+    fx.verts.x[fx.poly.first[6]] = Vec<2>(-4.5, 0.005);  // on the floor, inside the wall's reach
+    fx.verts.x[fx.poly.first[7] + 4] = Vec<2>(5.997, 2.3);  // on the side wall
+  }
   const Hopper<2> h = make_hopper<2>(fx.c);
   DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
   ff.set_dissipation(false);
   ParticleState<2>& s = fx.verts;
+  ff.compute(s);  // sets the edge search bounds for these (perhaps stretched) edges
   int with_energy = 0;
   for (ForceTerm<2>* term : ff.terms()) {
     auto energy = [&] {
@@ -45,11 +53,6 @@ void check_gradients(DpFixture& fx, int min_terms_with_energy) {
       }
   }
   EXPECT_GE(with_energy, min_terms_with_energy);
-}
-
-/// Polygons pressed together: neighbours' centres closer than their diameters.
-std::vector<Vec<2>> cluster() {
-  return {{-0.9, 3.0}, {0.05, 3.05}, {1.0, 2.95}, {-0.45, 3.85}, {0.5, 3.9}, {0.0, 2.1}, {-4.5, 0.55}, {4.2, 2.0}};
 }
 
 TEST(DpForces, GradientsSmoothDeformed) {
@@ -80,7 +83,8 @@ double brute_force_smooth_energy(const DpFixture& fx, double eps_c, int edges_of
   double energy = 0;
   for (int a = 0; a < p.vertices(); ++a)
     for (int b = 0; b < p.vertices(); ++b) {
-      if (p.owner[a] == p.owner[b] || (edges_of >= 0 && p.owner[a] != edges_of)) continue;
+      if (edges_of >= 0 && p.owner[a] != edges_of) continue;
+      if (b == a || b == p.next[a]) continue;  // self-contact: every vertex but the edge's own ends
       const Vec<2> e = x[p.next[a]] - x[a], q = x[b] - x[a];
       const double t = q.dot(e) / e.squaredNorm();
       const double dmn = 0.5 * (fx.shape.delta[fx.verts.species[a]] + fx.shape.delta[fx.verts.species[b]]);
@@ -168,6 +172,84 @@ TEST(DpForces, SmoothContactSearchFollowsStretchedEdges) {
   EXPECT_LT(ff.edge_bound(fx.poly.first[1]), 2 * l0);  // the other polygon's edges keep their reach
 }
 
+/// Rough edge core, independently: every edge against every vertex of another polygon or of
+/// its own polygon but the edge's ends and their other ring neighbours, slab only (0 <= t <= 1).
+double brute_force_rough_core_energy(const DpFixture& fx, double eps_c) {
+  const auto width = DpSmoothContact::core_widths(fx.shape);
+  const auto& p = fx.poly;
+  const int nv = p.vertices();
+  double energy = 0;
+  for (int i = 0; i < nv; ++i)
+    for (int j = 0; j < nv; ++j) {
+      if (j == i || j == p.next[i] || j == p.prev[i] || j == p.next[p.next[i]]) continue;  // ends, folds
+      const Vec<2> a = fx.verts.x[i], e = fx.verts.x[fx.poly.next[i]] - a, q = fx.verts.x[j] - a;
+      const double t = q.dot(e) / e.squaredNorm();
+      if (t < 0 || t > 1) continue;
+      const double d = std::fabs(q.dot(Vec<2>(e[1], -e[0]))) / e.norm();
+      const double dmn = 0.5 * (width[fx.verts.species[i]] + width[fx.verts.species[j]]);
+      if (d < dmn) energy += 0.5 * eps_c * (1 - d / dmn) * (1 - d / dmn);
+    }
+  return energy;
+}
+
+TEST(DpForces, RoughEdgeCoreHoldsVerticesOutOfStretchedEdges) {
+  // A soft rough polygon's edge stretched to 4 l0 leaves a gap between its end disks wide
+  // enough for a vertex to pass. The core (width l0/2) along the edge stops a vertex of
+  // another polygon and one of the edge's own polygon; it is invisible to the disks' list reach,
+  // so this also tests that the search follows the stretched edge.
+  DpFixture fx(dp_config("dp_rough", 8), cluster(), 0.0, 9);
+  const int a = fx.poly.first[5], an = fx.poly.next[a];
+  const double l0 = fx.shape.l0[1], core = 0.5 * l0;  // polygon 5 and 1 are both large
+  const double eps_core = DpSmoothContact::kRoughCoreEnergyFraction * fx.c.dp.E_c;
+  fx.verts.x[an] = fx.verts.x[a] + 4 * l0 * (fx.verts.x[an] - fx.verts.x[a]).normalized();
+  const Vec<2> e = fx.verts.x[an] - fx.verts.x[a];
+  const Vec<2> out(e[1] / e.norm(), -e[0] / e.norm());
+  const int own = fx.poly.first[5] + 8, other = fx.poly.first[1] + 3;
+  fx.verts.x[other] = fx.verts.x[a] + 0.5 * e + 0.4 * core * out;   // outside, mid-edge
+  fx.verts.x[own] = fx.verts.x[a] + 0.3 * e - 0.3 * core * out;     // inside, folded in
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  ff.set_dissipation(false);
+  ff.compute(fx.verts);
+  ForceTerm<2>& edge_core = *ff.terms()[8];
+  ASSERT_EQ(edge_core.name(), "dp_rough_edge_core");
+  VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+  const double energy = edge_core.accumulate(fx.verts, f).energy;
+  const double constructed = 0.5 * eps_core * (0.6 * 0.6 + 0.7 * 0.7);
+  EXPECT_GE(energy, constructed * (1 - 1e-12));
+  EXPECT_NEAR(energy, brute_force_rough_core_energy(fx, eps_core), 1e-10 * energy);
+  EXPECT_GT(f[other].dot(out), 0);  // pushed back out
+  EXPECT_LT(f[own].dot(out), 0);    // pushed back in
+  Vec<2> total = Vec<2>::Zero();
+  for (const auto& fi : f) total += fi;
+  EXPECT_LT(total.norm(), 1e-9 * f[other].norm());
+  // and the usual finite-difference check of every term, the core included
+  check_gradients(fx, 7);
+}
+
+TEST(DpForces, SmoothPolygonFoldedOntoItselfRepelsItsOwnVerticesWithoutFriction) {
+  // Vertex 8 of polygon 0 folded onto the polygon's edge 0 -> 1 from inside, half the edge width
+  // away: the polygon's own edge repels it (E_c/2 (1/2)^2, nothing else touches), and the two
+  // rub not: kinetic friction acts between particles only.
+  DpFixture fx(dp_config("dp_smooth", 2), {Vec<2>(-3, 5), Vec<2>(3, 5)}, 0.0, 2);
+  const int a = fx.poly.first[0], an = fx.poly.next[a], own = fx.poly.first[0] + 8;
+  const Vec<2> e = fx.verts.x[an] - fx.verts.x[a];
+  const Vec<2> out(e[1] / e.norm(), -e[0] / e.norm());
+  fx.verts.x[own] = fx.verts.x[a] + 0.5 * e - 0.5 * fx.shape.delta[0] * out;
+  fx.verts.v[own] = Vec<2>(1.0, -2.0);
+  fx.c.mu = 10;
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  const ForceReport r = ff.compute(fx.verts);
+  EXPECT_NEAR(r.U_contact, 0.5 * fx.c.dp.E_c * 0.25, 1e-9 * r.U_contact);
+  EXPECT_NEAR(r.U_contact, brute_force_smooth_energy(fx, fx.c.dp.E_c), 1e-9 * r.U_contact);
+  EXPECT_EQ(r.P_friction, 0.0);
+  VecArray<2> friction;
+  ff.friction_forces(fx.verts, friction);
+  for (const auto& fi : friction) EXPECT_EQ(fi.norm(), 0.0);
+  check_gradients(fx, 4);
+}
+
 TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
   // Vertex j of polygon 1 (a spike: its polygon is far away, its edges point away) travels
   // inside the contact shell of polygon 0 along edge i-1, around the convex corner i on an
@@ -208,10 +290,12 @@ TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
     EXPECT_NEAR(total, brute_force_smooth_energy(fx, c.dp.E_c), 1e-9 * expected) << "step " << k;
     const double on_polygon0 = brute_force_smooth_energy(fx, c.dp.E_c, /*edges_of=*/0);
     EXPECT_NEAR(on_polygon0, expected, 1e-9 * expected) << "step " << k;
+    // the spike folds polygon 1 onto itself (self-contact, which varies as it turns): leave it out
+    const double engine_on_polygon0 = total - brute_force_smooth_energy(fx, c.dp.E_c, /*edges_of=*/1);
     if (previous >= 0) {  // a double count would jump by `expected`
-      EXPECT_LT(std::fabs(total - previous), 0.25 * expected) << "jump at step " << k;
+      EXPECT_LT(std::fabs(engine_on_polygon0 - previous), 0.25 * expected) << "jump at step " << k;
     }
-    previous = total;
+    previous = engine_on_polygon0;
   }
 }
 

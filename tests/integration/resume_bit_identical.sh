@@ -52,7 +52,7 @@ echo "ok  SIGKILL x$kills + resume ($resumed resumes): bit-identical result"
 # SIGTERM: checkpoint at once, exit 5, then resume
 "$BIN" simulate "$WORK/job.json" -o "$WORK/term" --progress quiet > /dev/null 2>&1 &
 pid=$!
-sleep 0.7
+sleep "$(echo "$took * 0.4" | bc -l)"
 kill -TERM "$pid"
 set +e; wait "$pid"; rc=$?; set -e
 [ "$rc" -eq 5 ] || fail "SIGTERM: exit $rc, expected 5"

@@ -39,6 +39,7 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     rough_ = std::make_unique<SpContact<2>>(list_, E_c, c.mu);
     rough_->set_friction_groups(&p.owner);
     rough_core_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_edge_core(list_, p, shape, E_c));
+    rough_fold_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_fold_barrier(list_, p, shape, E_c));
     // the disks' list reach (l0) already covers a core contact within l0 - l0/2 of a vertex
     const auto core = DpSmoothContact::core_widths(shape);
     reach_covered_ = std::min(shape.delta[0] - core[0], shape.delta[1] - core[1]);
@@ -68,9 +69,9 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.max_overlap = smooth_->max_overlap();
   } else {
     const TermOutput o = rough_->accumulate(s, s.f);
-    r.U_contact = o.energy + rough_core_->accumulate(s, s.f).energy;
+    r.U_contact = o.energy + rough_core_->accumulate(s, s.f).energy + rough_fold_->accumulate(s, s.f).energy;
     r.P_friction = o.power;
-    r.max_overlap = std::max(rough_->max_overlap(), rough_core_->max_overlap());
+    r.max_overlap = std::max({rough_->max_overlap(), rough_core_->max_overlap(), rough_fold_->max_overlap()});
   }
   r.U_wall = walls_.accumulate(s, s.f).energy;
   r.U_wall += corners_.accumulate(s, s.f).energy;
@@ -111,9 +112,13 @@ void DpForceField::friction_forces(const ParticleState<2>& s, VecArray<2>& out) 
 }
 
 std::string DpForceField::describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const {
-  // the smooth contact, or the rough edge core if its overlap is the larger (rough disks: no detail)
-  const DpSmoothContact* edges = smooth_ ? smooth_.get() : rough_core_.get();
-  if (!smooth_ && rough_core_->max_overlap() < rough_->max_overlap()) return "";
+  // the smooth contact, or the rough edge core or fold barrier if its overlap is the larger
+  // (rough disks: no detail)
+  const DpSmoothContact* edges = smooth_.get();
+  if (!smooth_) {
+    edges = rough_fold_->max_overlap() > rough_core_->max_overlap() ? rough_fold_.get() : rough_core_.get();
+    if (edges->max_overlap() < rough_->max_overlap()) return "";
+  }
   const auto [vertex, edge] = edges->worst_contact();
   if (vertex < 0) return "";
   std::ostringstream m;
@@ -124,7 +129,7 @@ std::string DpForceField::describe_worst_contact(const ParticleState<2>& s, cons
 
 std::vector<ForceTerm<2>*> DpForceField::terms() {
   if (smooth_) return {&area_, &segments_, &bending_, smooth_.get(), &walls_, &gravity_, &drag_, &corners_};
-  return {&area_, &segments_, &bending_, rough_.get(), &walls_, &gravity_, &drag_, &corners_, rough_core_.get()};
+  return {&area_, &segments_, &bending_, rough_.get(), &walls_, &gravity_, &drag_, &corners_, rough_core_.get(), rough_fold_.get()};
 }
 
 }  // namespace beverloo

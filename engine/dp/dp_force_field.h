@@ -50,7 +50,7 @@ class DpForceField {
   static constexpr double kEdgeBoundGrowth = 1.25;
   static constexpr double kEdgeBoundFloor = 1.25;
   /// area, segment length, bending, contact, walls, gravity, drag, wall corners (rough: and
-  /// the edge core)
+  /// the edge core, and the fold barrier)
   std::vector<ForceTerm<2>*> terms();
   /// Where the largest contact overlap of the last evaluation is (for failure messages).
   std::string describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const;
@@ -75,6 +75,7 @@ class DpForceField {
   std::unique_ptr<DpSmoothContact> smooth_;
   std::unique_ptr<SpContact<2>> rough_;
   std::unique_ptr<DpSmoothContact> rough_core_;
+  std::unique_ptr<DpSmoothContact> rough_fold_;
   HopperWalls<2> walls_;
   Gravity<2> gravity_;
   Drag<2> drag_;

@@ -8,7 +8,7 @@ namespace beverloo {
 
 template <DpSmoothContact::Mode kMode>
 void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy,
-                                  double& power, double& max_ov) const {
+                                  double& power, double& max_ov, FoldCap cap) const {
   const int an = p_.next[a];
   const Vec<2> ra = s.x[a];
   const Vec<2> e = s.x[an] - ra;
@@ -29,7 +29,24 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     }
     w_start = 1 - t;
     w_end = t;
-  } else if (t < 0 && corners_) {
+  } else if (t < 0 && cap == FoldCap::AtStart) {
+    // the fold pair's shared vertex: the distance to it is the length of the vertex's own edge
+    // to it, which no other term claims (see the fold loop)
+    const double d2 = q.squaredNorm();
+    if (d2 >= dmn * dmn) return;
+    d = std::sqrt(d2);
+    dir = q / d;
+    w_start = 1;
+    w_end = 0;
+  } else if (t > 1 && cap == FoldCap::AtEnd) {
+    const Vec<2> qe = s.x[b] - s.x[an];
+    const double d2 = qe.squaredNorm();
+    if (d2 >= dmn * dmn) return;
+    d = std::sqrt(d2);
+    dir = qe / d;
+    w_start = 0;
+    w_end = 1;
+  } else if (t < 0 && corners_ && cap == FoldCap::None) {
     // Inside the previous edge's slab (t_prev <= 1) the previous edge has the contact. t_prev
     // is computed with the very operations of that edge's own test, so that exactly one of the
     // two branches holds on the boundary.
@@ -87,7 +104,7 @@ template <DpSmoothContact::Mode kMode>
 TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) const {
   double energy = 0, power = 0, max_ov = 0;
   const int n = s.size();
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; pairs_ && i < n; ++i) {
     for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
       edges_at_vertex<kMode>(s, f, i, *p, energy, power, max_ov);
       edges_at_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
@@ -95,12 +112,16 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
   }
   // Folds: each edge against the vertex one place beyond either of its ends, of its own polygon
   // (at rest beyond the edge's end, so nothing; they meet only where the polygon folds back on
-  // itself at the shared vertex, which soft bending allows). Not for the rough core: without
-  // end caps its energy would jump where such a vertex, always within one (compressible) edge
-  // of the shared vertex, leaves the slab; the smooth width (0.1 l0) is far below that edge.
-  for (int k = 0; corners_ && k < n; ++k) {
-    edge_vertex<kMode>(s, f, p_.prev[k], p_.next[k], energy, power, max_ov);  // edge prev(k) -> k
-    edge_vertex<kMode>(s, f, k, p_.prev[k], energy, power, max_ov);           // edge k -> next(k)
+  // itself at the shared vertex k, which soft bending allows). The capsule is capped at k: on
+  // the slab's boundary at k the vertex is one edge from k, so without the cap the energy
+  // would jump there whenever that edge is compressed below the width. With it, an edge
+  // shorter than the width is pushed apart from both its ends' fold pairs (energy
+  // eps (1 - l/width)^2), which keeps it from collapsing through zero, another way to fold.
+  // Not for the rough core (l0/2 is within reach of a compressed edge, and the core has no
+  // caps): the rough model has a narrower term of its own for this (rough_fold_barrier).
+  for (int k = 0; folds_ && k < n; ++k) {
+    edge_vertex<kMode>(s, f, p_.prev[k], p_.next[k], energy, power, max_ov, FoldCap::AtEnd);  // edge prev(k) -> k
+    edge_vertex<kMode>(s, f, k, p_.prev[k], energy, power, max_ov, FoldCap::AtStart);         // edge k -> next(k)
   }
   if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;
   return {energy, power};

@@ -20,9 +20,10 @@
 /// (dissipative: power -mu |v_j - v_P|^2 per contact; momentum conserving).
 ///
 /// Self-contact (a decision, not in the paper): the edges of a polygon also repel its own
-/// vertices, except the two ring neighbours of the edge's ends, without friction. At rest these
-/// lie beyond the ends of each other's edges, so only a folding polygon feels it; it keeps soft
-/// polygons (K_l ~ 1, K_b ~ 1e-2) simple.
+/// vertices but the edge's ends, without friction. At rest these lie beyond the ends of each
+/// other's edges, so only a folding polygon feels it; it keeps soft polygons (K_l ~ 1,
+/// K_b ~ 1e-2) simple. The vertex one place beyond either end of an edge (a fold pair) is
+/// handled apart: its capsule is capped at the shared vertex and not at the other end.
 ///
 /// Every edge-vertex pair in contact is found from the vertex Verlet
 /// list through the edge's nearer end vertex: a vertex within delta_mn of an edge is within
@@ -62,6 +63,24 @@ class DpSmoothContact final : public ForceTerm<2> {
   static std::array<double, 2> core_widths(const DpShape& shape) { return {0.5 * shape.l0[0], 0.5 * shape.l0[1]}; }
   static constexpr double kRoughCoreEnergyFraction = 0.25;
 
+  /// The rough model's fold barrier: each edge against the vertex one place beyond either of
+  /// its ends, of its own polygon (the pairs the core leaves out), slabs only, width
+  /// kRoughFoldWidth l0 and energy scale E_c kRoughFoldWidth^2 (the disks' stiffness per unit
+  /// overlap again). At rest such a vertex is beyond the edge's end; it reaches the slab only
+  /// where the polygon folds at the shared vertex (interior angle below 90 degrees). The edge is
+  /// capped at the shared vertex (the fold loop in the .cpp), so an edge compressed below the
+  /// width is also pushed apart. Without this term a soft polygon (K_l ~ 1, K_b ~ 1e-2) folds
+  /// through itself at a vertex, where its disks two apart no longer meet. Not in the paper.
+  static DpSmoothContact rough_fold_barrier(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
+                                            double E_c) {
+    DpSmoothContact c(list, p, {kRoughFoldWidth * shape.l0[0], kRoughFoldWidth * shape.l0[1]},
+                      kRoughFoldWidth * kRoughFoldWidth * E_c, 0.0, false, "dp_rough_fold_barrier");
+    c.pairs_ = false;
+    c.folds_ = true;
+    return c;
+  }
+  static constexpr double kRoughFoldWidth = 0.25;
+
   std::string_view name() const override { return name_; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override;
   /// Friction force on each vertex alone (for the |F^mu| observable); overwrites out.
@@ -80,19 +99,23 @@ class DpSmoothContact final : public ForceTerm<2> {
   template <Mode kMode>
   void edges_at_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
                        double& max_ov) const;
+  /// Fold pairs (same polygon, b one place beyond an end of edge a) cap the edge at that end.
+  enum class FoldCap { None, AtStart, AtEnd };
   template <Mode kMode>
   void edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
-                   double& max_ov) const;
+                   double& max_ov, FoldCap cap = FoldCap::None) const;
 
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c, double mu,
                   bool corners, const char* name)
-      : list_(list), p_(p), width_(width), eps_(E_c), mu_(mu), corners_(corners), name_(name) {}
+      : list_(list), p_(p), width_(width), eps_(E_c), mu_(mu), corners_(corners), folds_(corners), name_(name) {}
 
   const NeighborList<2>& list_;
   const PolygonSet& p_;
   std::array<double, 2> width_;  ///< edge (and vertex) contact width per species
   double eps_, mu_;
-  bool corners_;  ///< false: slabs only (the rough core)
+  bool corners_;        ///< false: slabs only (the rough core and fold barrier)
+  bool pairs_ = true;   ///< edge-vertex pairs from the list (all but the fold barrier)
+  bool folds_;          ///< each edge against the vertex one beyond either end, same polygon
   const char* name_;
   bool friction_on_ = true;
   // written by the evaluation loop, which friction_forces() (const) shares

@@ -92,6 +92,9 @@ double brute_force_smooth_energy(const DpFixture& fx, double eps_c, int edges_of
       if (t >= 0 && t <= 1) {
         d = std::fabs(e[1] * q[0] - e[0] * q[1]) / e.norm();
         if (d >= dmn) continue;
+      } else if (b == p.prev[a] || b == p.next[p.next[a]]) {  // fold pair: capped at the shared vertex only
+        d = b == p.prev[a] ? (t < 0 ? q.norm() : 1e9) : (t > 1 ? (x[b] - x[p.next[a]]).norm() : 1e9);
+        if (d >= dmn) continue;
       } else if (t < 0 && (x[b] - x[p.prev[a]]).dot(x[a] - x[p.prev[a]]) / (x[a] - x[p.prev[a]]).squaredNorm() > 1) {
         d = q.norm();
         if (d >= dmn) continue;
@@ -225,6 +228,81 @@ TEST(DpForces, RoughEdgeCoreHoldsVerticesOutOfStretchedEdges) {
   EXPECT_LT(total.norm(), 1e-9 * f[other].norm());
   // and the usual finite-difference check of every term, the core included
   check_gradients(fx, 7);
+}
+
+/// Rough fold barrier, independently: every edge against the vertex one place beyond either of
+/// its ends (same polygon), slab and a cap at the shared vertex, width kRoughFoldWidth l0.
+double brute_force_rough_fold_energy(const DpFixture& fx, double eps_fold) {
+  const auto& p = fx.poly;
+  double energy = 0;
+  for (int i = 0; i < p.vertices(); ++i)
+    for (int j : {p.prev[i], p.next[p.next[i]]}) {
+      const Vec<2> a = fx.verts.x[i], e = fx.verts.x[p.next[i]] - a, q = fx.verts.x[j] - a;
+      const double t = q.dot(e) / e.squaredNorm();
+      double d = std::fabs(q.dot(Vec<2>(e[1], -e[0]))) / e.norm();
+      if (t < 0) d = j == p.prev[i] ? q.norm() : 1e9;  // capped at the shared vertex only
+      if (t > 1) d = j == p.prev[i] ? 1e9 : (fx.verts.x[j] - fx.verts.x[p.next[i]]).norm();
+      const double dmn = DpSmoothContact::kRoughFoldWidth * fx.shape.l0[fx.verts.species[i]];
+      if (d < dmn) energy += 0.5 * eps_fold * (1 - d / dmn) * (1 - d / dmn);
+    }
+  return energy;
+}
+
+TEST(DpForces, RoughPolygonFoldedAtAVertexMeetsTheFoldBarrier) {
+  // Vertex k's interior angle closed until its ring neighbour prev(k) lies on the edge
+  // k -> next(k), inside, half the barrier's width from it: a polygon folding through itself
+  // at one vertex, which neither the disks (prev(k) and next(k) stay ~l0 apart along a
+  // stretched edge) nor the core (it leaves out the edge's ring neighbours) would stop.
+  DpFixture fx(dp_config("dp_rough", 2), {Vec<2>(-3, 5), Vec<2>(3, 5)}, 0.0, 3);
+  const double l0 = fx.shape.l0[0];
+  const int k = fx.poly.first[0] + 4, kp = fx.poly.prev[k], kn = fx.poly.next[k];
+  const double eps_fold = DpSmoothContact::kRoughFoldWidth * DpSmoothContact::kRoughFoldWidth * fx.c.dp.E_c;
+  const double width = DpSmoothContact::kRoughFoldWidth * l0;
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  ff.set_dissipation(false);
+  ForceTerm<2>& fold = *ff.terms()[9];
+  ASSERT_EQ(fold.name(), "dp_rough_fold_barrier");
+  ff.compute(fx.verts);
+  VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+  EXPECT_EQ(fold.accumulate(fx.verts, f).energy, 0.0);  // regular: nothing folds
+  fx.verts.x[kn] = fx.verts.x[k] + 2.0 * l0 * (fx.verts.x[kn] - fx.verts.x[k]).normalized();  // stretched
+  const Vec<2> e = fx.verts.x[kn] - fx.verts.x[k];
+  const Vec<2> out(e[1] / e.norm(), -e[0] / e.norm());
+  fx.verts.x[kp] = fx.verts.x[k] + 0.3 * e - 0.5 * width * out;  // 0.6 l0 along, just inside
+  ff.compute(fx.verts);
+  for (auto& fi : f) fi.setZero();
+  const double energy = fold.accumulate(fx.verts, f).energy;
+  EXPECT_NEAR(energy, 0.5 * eps_fold * 0.25, 1e-9 * energy);
+  EXPECT_NEAR(energy, brute_force_rough_fold_energy(fx, eps_fold), 1e-12 * energy);
+  EXPECT_LT(f[kp].dot(out), 0);  // pushed back in, unfolding the vertex
+  Vec<2> total = Vec<2>::Zero();
+  for (const auto& fi : f) total += fi;
+  EXPECT_LT(total.norm(), 1e-9 * f[kp].norm());
+  check_gradients(fx, 5);
+
+  // prev(k) slides along the edge to k, half the width inside, then around k at that distance
+  // (the edge prev(k) -> k compressed below the width): no jump where it leaves the slab
+  const Vec<2> along = e.normalized();
+  double previous = -1;
+  for (int step = 0; step <= 60; ++step) {
+    const double half = 0.5 * width;
+    if (step <= 20) {
+      fx.verts.x[kp] = fx.verts.x[k] + (0.02 * (20 - step)) * l0 * along - half * out;
+    } else {
+      const double phi = 0.5 * units::pi * (step - 20) / 40.0;  // from -out toward -along
+      fx.verts.x[kp] = fx.verts.x[k] - half * (std::cos(phi) * out + std::sin(phi) * along);
+    }
+    ff.compute(fx.verts);
+    for (auto& fi : f) fi.setZero();
+    const double u = fold.accumulate(fx.verts, f).energy;
+    EXPECT_NEAR(u, brute_force_rough_fold_energy(fx, eps_fold), 1e-9 * eps_fold) << "step " << step;
+    EXPECT_GE(u, 0.5 * eps_fold * 0.25 * (1 - 1e-9)) << "step " << step;  // the shared vertex's cap holds
+    if (previous >= 0) {
+      EXPECT_LT(std::fabs(u - previous), 0.05 * eps_fold) << "jump at step " << step;
+    }
+    previous = u;
+  }
 }
 
 TEST(DpForces, SmoothPolygonFoldedOntoItselfRepelsItsOwnVerticesWithoutFriction) {

@@ -105,7 +105,7 @@ void DpSystem::body_friction(VecArray<2>& out) {
   for (int i = 0; i < verts_.size(); ++i) out[poly_.owner[i]] += vertex_scratch_[i];
 }
 
-void DpSystem::check_vertices(const ParticleState<2>& bodies, double t) const {
+void DpSystem::check_vertices(double t) const {
   // The contact search follows stretched edges (DpForceField::edge_bound); an edge this long
   // means the polygon is coming apart.
   if (ff_->longest_edge() > kMaxEdgeStretch * shape_.l0[1]) {
@@ -114,16 +114,21 @@ void DpSystem::check_vertices(const ParticleState<2>& bodies, double t) const {
       << " l0 of the large species) at t = " << t;
     throw InstabilityError(m.str());
   }
-  // A vertex may wrap around an orifice corner by its contact radius; one a whole edge
-  // under the floor while its polygon has not exited went through the wall.
-  const double half_w = hopper_.orifice_half_width() + shape_.l0[1];
+  // A polygon may wrap around an orifice corner (walls are lines), with vertices under the
+  // floor; it has gone through a wall only if one of its edges cuts one. Vertices beyond the
+  // side walls are outside the container.
   for (int i = 0; i < verts_.size(); ++i) {
     const Vec<2>& x = verts_.x[i];
-    const int m = poly_.owner[i];
-    if (!hopper_.contains(x) || (!bodies.exited[m] && x[1] < 0 && std::fabs(x[0]) > half_w)) {
+    const Vec<2>& next = verts_.x[poly_.next[i]];
+    const int wall = hopper_.funnel_wall_crossed(x, next);
+    if (!hopper_.contains(x) || wall >= 0) {
       std::ostringstream msg;
-      msg << "vertex " << i << " of polygon " << m << " went through a wall at t = " << t << " (position "
-          << x.transpose() << ")";
+      msg << "polygon " << poly_.owner[i] << " went through a wall at t = " << t << ": ";
+      if (wall >= 0)
+        msg << "its edge from vertex " << i << " (" << x.transpose() << ") to vertex " << poly_.next[i] << " ("
+            << next.transpose() << ") cuts the " << (wall == 0 ? "left" : "right") << " funnel wall";
+      else
+        msg << "vertex " << i << " at (" << x.transpose() << ") is outside the container";
       throw InstabilityError(msg.str());
     }
   }

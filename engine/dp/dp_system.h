@@ -42,9 +42,9 @@ class DpSystem {
   bool spot_is_free(int m, const Vec<2>& centre) const;
   /// Friction force on each body: the sum over its vertices.
   void body_friction(VecArray<2>& out);
-  /// Throws InstabilityError if an edge outgrew the contact list's reach or a vertex of a
-  /// polygon still in the hopper went through the floor (more than an edge beyond the orifice).
-  void check_vertices(const ParticleState<2>& bodies, double t) const;
+  /// Throws InstabilityError if an edge outgrew the contact list's reach, a vertex left the
+  /// container sideways, or a polygon edge cuts a funnel wall (the polygon went through it).
+  void check_vertices(double t) const;
 
   ParticleState<2>& verts() { return verts_; }
   const ParticleState<2>& verts() const { return verts_; }

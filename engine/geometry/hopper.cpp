@@ -1,5 +1,7 @@
 #include "hopper.h"
 
+#include <algorithm>
+
 namespace beverloo {
 
 Hopper<2>::Hopper(double W, double w, double theta_left_rad, double theta_right_rad) : W_(W), w_(w) {
@@ -29,6 +31,19 @@ bool Hopper<2>::contains(const Vec<2>& p) const {
   const double left = y < h_left_ ? -w_ / 2 - (W_ - w_) / 2 * y / h_left_ : -W_ / 2;
   const double right = y < h_right_ ? w_ / 2 + (W_ - w_) / 2 * y / h_right_ : W_ / 2;
   return x > left && x < right;
+}
+
+int Hopper<2>::funnel_wall_crossed(const Vec<2>& p, const Vec<2>& q) const {
+  if (std::min(p[1], q[1]) > funnel_top() || std::max(p[1], q[1]) < 0) return -1;  // the funnels lie in 0 <= y <= top
+  auto side = [](const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
+    const Vec<2> ab = b - a, ac = c - a;
+    return ab[0] * ac[1] - ab[1] * ac[0];
+  };
+  for (int k = 0; k < 2; ++k) {
+    const Vec<2> a = seg_[k].a, b = seg_[k].a + seg_[k].length * seg_[k].u;
+    if (side(a, b, p) * side(a, b, q) < 0 && side(p, q, a) * side(p, q, b) < 0) return k;
+  }
+  return -1;
 }
 
 }  // namespace beverloo

@@ -37,6 +37,10 @@ class Hopper<2> {
   }
   /// True if p lies inside the container (between the walls) or below the orifice plane.
   bool contains(const Vec<2>& p) const;
+  /// The funnel wall (0 or 1) that the segment p -> q properly crosses, or -1: a polygon edge
+  /// crossing a wall has been pierced by it (walls are lines without thickness, so a polygon
+  /// may wrap around an orifice corner, but none of its edges may cut a wall).
+  int funnel_wall_crossed(const Vec<2>& p, const Vec<2>& q) const;
   /// Lateral extent available to a particle centre of radius r at height y >= funnel_top().
   double half_width() const { return W_ / 2; }
   double funnel_top() const { return std::max(h_left_, h_right_); }

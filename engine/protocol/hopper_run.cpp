@@ -217,7 +217,7 @@ void HopperRun<D>::step_once_dp() {
 template <int D>
 void HopperRun<D>::check_containment() const {
   if constexpr (D == 2) {
-    if (dp_) dp_->check_vertices(s_, time());
+    if (dp_) dp_->check_vertices(time());
   }
   for (int i = 0; i < s_.size(); ++i) {
     if (!hopper_.contains(s_.x[i]) || s_.x[i][kUp<D>] > ceiling_ ||

@@ -160,6 +160,44 @@ TEST(DpDynamics, SoftestSmoothPolygonsStaySimpleWhileFlowing) { check_softest_po
 // barrier's width made its energy jump and kicked a vertex to ~17 sigma/t0 (the run blew up).
 TEST(DpDynamics, SoftestRoughPolygonsStaySimpleWhileFlowing) { check_softest_polygons_stay_simple("dp_rough"); }
 
+/// Polygon m's vertices along a C-shaped closed path (corner points, each side split in two):
+/// around the right orifice corner (w/2, 0) with its bend at x = bend, above and below the floor.
+void drape_polygon_as_c(DpSystem& dp, int m, double bend) {
+  const std::vector<Vec<2>> corners = {{bend + 1.3, 0.3}, {bend - 0.3, 0.3}, {bend - 0.3, -0.3}, {bend + 1.3, -0.3},
+                                       {bend + 1.3, -0.1}, {bend - 0.1, -0.1}, {bend - 0.1, 0.15}, {bend + 1.3, 0.15}};
+  const PolygonSet& p = dp.polygons();
+  ASSERT_EQ(p.first[m + 1] - p.first[m], 16);
+  for (int k = 0; k < 8; ++k) {
+    const Vec<2> a = corners[k], b = corners[(k + 1) % 8];
+    dp.verts().x[p.first[m] + 2 * k] = a;
+    dp.verts().x[p.first[m] + 2 * k + 1] = 0.5 * (a + b);
+  }
+}
+
+TEST(DpProtocol, PolygonDrapedAroundAnOrificeCornerIsNotThroughTheWall) {
+  // Walls are lines: a soft polygon may hang around an orifice corner with vertices far under
+  // the floor (an earlier rule, "a vertex more than an edge beyond the orifice under the
+  // floor", stopped such a run as a blow-up). Only an edge cutting a wall is a polygon gone
+  // through it.
+  SimConfig c = dp_config("dp_smooth", 2);
+  const Hopper<2> h = make_hopper<2>(c);
+  DpSystem dp(c, h);
+  ParticleState<2> bodies;
+  Rng rng(3);
+  dp.place_bodies(bodies, rng);
+  dp.build_polygons(bodies, rng);
+  const double corner = h.orifice_half_width();
+  drape_polygon_as_c(dp, 0, corner - 0.15);  // bend inside the orifice: wrapped around the corner
+  EXPECT_NO_THROW(dp.check_vertices(1.0));
+  drape_polygon_as_c(dp, 0, corner + 0.3);  // bend beyond the corner: the floor cuts the polygon
+  try {
+    dp.check_vertices(1.0);
+    FAIL() << "a polygon cut by the floor must stop the run";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("cuts the right funnel wall"), std::string::npos) << e.what();
+  }
+}
+
 TEST(DpDynamics, CrushedContactsStopTheRunWithAReason) {
   SimConfig c = flowing_dp("dp_smooth", 10, 0.1);
   c.dp.E_c = 1e-3;  // far too soft to hold the polygons' weight

@@ -36,6 +36,18 @@ TEST(Hopper2D, OrificeEdgesAreCorners) {
   EXPECT_FALSE(funnel.contains(Vec<2>(4.5, 1)));  // outside the 45 degree wall
 }
 
+TEST(Hopper2D, SegmentsCuttingAFunnelWall) {
+  const Hopper<2> h(50, 6, units::pi / 2, units::pi / 2);
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(2.5, 0.5), Vec<2>(2.5, -0.5)), -1);  // through the orifice
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(3.5, 0.5), Vec<2>(3.5, -0.5)), 1);   // through the right floor
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(-4, -0.1), Vec<2>(-3.5, 0.2)), 0);   // through the left floor
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(3.5, 0.5), Vec<2>(8, 0.1)), -1);     // above it
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(3.5, -0.5), Vec<2>(8, -0.1)), -1);   // under it
+  const Hopper<2> funnel(50, 6, units::deg_to_rad(45), units::deg_to_rad(45));
+  EXPECT_EQ(funnel.funnel_wall_crossed(Vec<2>(4, 0.5), Vec<2>(5, 1.5)), -1);  // inside, along the wall
+  EXPECT_EQ(funnel.funnel_wall_crossed(Vec<2>(4, 0.5), Vec<2>(4, 1.5)), 1);   // across the 45 degree wall
+}
+
 TEST(Hopper3D, BaseAnnulusRimAndMantle) {
   const Hopper<3> h(25, 6);
   EXPECT_EQ(h.nearest_point(0, Vec<3>(5, 0, 0.3)), Vec<3>(5, 0, 0));     // on the base

@@ -130,7 +130,7 @@ void HopperRun<D>::prepare() {
   const double top = set_ceiling();
   if (have_dir && c_.run.trajectory_every_steps > 0)
     traj_.reset(new Trajectory{H5mdTrajectory<D>(path("trajectory.h5"), c_, s_, top, resumed_times_ ? s_.step : -1)});
-  session_start_ = last_progress_ = std::chrono::steady_clock::now();
+  session_start_ = last_progress_ = last_checkpoint_ = std::chrono::steady_clock::now();
   session_first_step_ = s_.step;
 }
 
@@ -275,7 +275,16 @@ RunResult HopperRun<D>::run() {
       est = estimator_.estimate(rec_, t);
       return finish("time_limit", "reached run.t_max before the error target", est);
     }
-    if (files && ckpt_steps && step % ckpt_steps == 0) save_checkpoint(path("checkpoint.h5"));
+    if (files && ckpt_steps && step % ckpt_steps == 0) {
+      save_checkpoint(path("checkpoint.h5"));
+      last_checkpoint_ = std::chrono::steady_clock::now();
+    } else if (files && opt_.checkpoint_wall_seconds > 0 && step % kContainmentSteps == 0) {
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - last_checkpoint_).count() >= opt_.checkpoint_wall_seconds) {
+        save_checkpoint(path("checkpoint.h5"));
+        last_checkpoint_ = now;
+      }
+    }
     if (opt_.stop_request && opt_.stop_request->load(std::memory_order_relaxed)) {
       if (files) save_checkpoint(path("checkpoint.h5"));
       RunResult r;

@@ -39,6 +39,11 @@ struct RunOptions {
   /// If set, receives the current step now and then (a few times per simulated time unit), so that
   /// another thread can report progress (the worker's heartbeat file) without touching the run.
   std::atomic<std::int64_t>* progress_step = nullptr;
+  /// Also checkpoint whenever this many wall seconds have passed since the last checkpoint (0:
+  /// never). run.checkpoint_interval counts simulated time, which for stiff DP runs can be
+  /// hours of wall time; a checkpoint at any step resumes bit-identically, so this changes no
+  /// result, only how much work a SIGKILL or a lost node can cost.
+  double checkpoint_wall_seconds = 600;
 };
 
 template <int D>
@@ -112,7 +117,7 @@ class HopperRun {
   double ceiling_ = 0;            ///< a particle above this height has escaped upward
   double wall_seconds_before_ = 0;  ///< from earlier sessions (resume)
   int resumed_times_ = 0;
-  std::chrono::steady_clock::time_point session_start_, last_progress_;
+  std::chrono::steady_clock::time_point session_start_, last_progress_, last_checkpoint_;
   std::int64_t session_first_step_ = 0;
   struct Trajectory;
   std::unique_ptr<Trajectory> traj_;

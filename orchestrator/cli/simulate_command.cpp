@@ -21,6 +21,7 @@ struct SimulateArgs {
   bool resume = false;
   bool overwrite = false;
   bool json = false;
+  double checkpoint_wall_seconds = 600;
   std::string progress = "auto";
 };
 
@@ -95,6 +96,7 @@ int run_simulate(const SimulateArgs& a) {
                  : a.progress == "log"    ? ProgressMode::Log
                  : a.progress == "quiet"  ? ProgressMode::Quiet
                                           : ProgressMode::Auto;
+  opt.checkpoint_wall_seconds = a.checkpoint_wall_seconds;
   opt.stop_request = install_stop_handlers();
   auto record_failure = [&](const char* cls, const std::string& message) {
     try {
@@ -138,6 +140,11 @@ void add_simulate_command(CLI::App& app, int& exit_status) {
   cmd->add_flag("--resume", args->resume, "continue from DIR/checkpoint.h5 if present");
   cmd->add_flag("--overwrite", args->overwrite, "discard a run already in DIR");
   cmd->add_flag("--json", args->json, "print the result summary as JSON");
+  cmd->add_option("--checkpoint-wall", args->checkpoint_wall_seconds,
+                  "also checkpoint after this many wall seconds since the last checkpoint (0: only every "
+                  "run.checkpoint_interval of simulated time); results do not depend on it")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_option("--progress", args->progress, "auto | terminal | log | quiet")
       ->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));
   cmd->callback([args, &exit_status] { exit_status = run_simulate(*args); });

@@ -64,3 +64,26 @@ echo "ok  SIGTERM: exit 5, resume: bit-identical result"
 # a finished run resumed again does nothing
 "$BIN" simulate "$WORK/job.json" -o "$WORK/term" --resume --progress quiet 2>&1 | grep -q "already complete" \
   || fail "resuming a finished run must say so"
+
+# checkpoints by wall clock only (no simulated-time cadence), so at arbitrary steps: a run
+# killed after some of them and resumed equals one that never wrote a checkpoint
+python3 - "$WORK/job.json" "$WORK/job_wall.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1])); j["run"]["checkpoint_interval"] = 0
+json.dump(j, open(sys.argv[2], "w"))
+PY
+"$BIN" simulate "$WORK/job_wall.json" -o "$WORK/wall_clean" --checkpoint-wall 0 --progress quiet > /dev/null
+[ ! -f "$WORK/wall_clean/checkpoint.h5" ] || fail "--checkpoint-wall 0 with checkpoint_interval 0 wrote a checkpoint"
+"$BIN" simulate "$WORK/job_wall.json" -o "$WORK/wall" --checkpoint-wall 0.05 --progress quiet > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 600); do [ -f "$WORK/wall/checkpoint.h5" ] && break; sleep 0.05; done
+sleep "$(echo "$took * 0.3" | bc -l)"
+kill -9 "$pid" 2>/dev/null || fail "the wall-clock run finished before it could be killed"
+wait "$pid" 2>/dev/null || true
+[ -f "$WORK/wall/checkpoint.h5" ] || fail "no checkpoint from --checkpoint-wall"
+"$BIN" simulate "$WORK/job_wall.json" -o "$WORK/wall" --resume --checkpoint-wall 0.05 --progress quiet > /dev/null
+resumed=$(h5dump -a /run/resumed_times "$WORK/wall/result.h5" | grep -o '(0): [0-9]*' | grep -o '[0-9]*$')
+[ "$resumed" -ge 1 ] || fail "the wall-clock run did not resume from its checkpoint"
+diff <(result_data "$WORK/wall_clean/result.h5") <(result_data "$WORK/wall/result.h5") > /dev/null \
+  || fail "result after resuming from wall-clock checkpoints differs"
+echo "ok  wall-clock checkpoints at arbitrary steps: bit-identical result"

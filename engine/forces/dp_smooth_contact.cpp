@@ -18,6 +18,16 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
   const double dmn = 0.5 * (width_[s.species[a]] + width_[s.species[b]]);
   double d, w_start, w_end;  // distance; lever weights of the edge's start and end vertices
   Vec<2> dir;                // unit vector along which d grows when vertex b moves
+  // contact with one end vertex of the edge (a corner, or a fold pair's cap); r = r_b - that end
+  auto to_end_vertex = [&](const Vec<2>& r, bool at_start) {
+    const double d2 = r.squaredNorm();
+    if (d2 >= dmn * dmn) return false;
+    d = std::sqrt(d2);
+    dir = r / d;
+    w_start = at_start ? 1 : 0;
+    w_end = at_start ? 0 : 1;
+    return true;
+  };
   if (t >= 0 && t <= 1) {
     const double inv_len = 1.0 / std::sqrt(e2);
     dir = Vec<2>(e[1] * inv_len, -e[0] * inv_len);  // outward normal (counter-clockwise polygon)
@@ -32,20 +42,9 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
   } else if (t < 0 && cap == FoldCap::AtStart) {
     // the fold pair's shared vertex: the distance to it is the length of the vertex's own edge
     // to it, which no other term claims (see the fold loop)
-    const double d2 = q.squaredNorm();
-    if (d2 >= dmn * dmn) return;
-    d = std::sqrt(d2);
-    dir = q / d;
-    w_start = 1;
-    w_end = 0;
+    if (!to_end_vertex(q, true)) return;
   } else if (t > 1 && cap == FoldCap::AtEnd) {
-    const Vec<2> qe = s.x[b] - s.x[an];
-    const double d2 = qe.squaredNorm();
-    if (d2 >= dmn * dmn) return;
-    d = std::sqrt(d2);
-    dir = qe / d;
-    w_start = 0;
-    w_end = 1;
+    if (!to_end_vertex(s.x[b] - s.x[an], false)) return;
   } else if (t < 0 && corners_ && cap == FoldCap::None) {
     // Inside the previous edge's slab (t_prev <= 1) the previous edge has the contact. t_prev
     // is computed with the very operations of that edge's own test, so that exactly one of the
@@ -53,12 +52,7 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     const Vec<2> rp = s.x[p_.prev[a]];
     const Vec<2> ep = ra - rp;
     if ((s.x[b] - rp).dot(ep) / ep.squaredNorm() <= 1) return;
-    const double d2 = q.squaredNorm();
-    if (d2 >= dmn * dmn) return;
-    d = std::sqrt(d2);
-    dir = q / d;
-    w_start = 1;
-    w_end = 0;
+    if (!to_end_vertex(q, true)) return;
   } else {
     return;  // beyond the end: the next edge's start vertex (its wedge) or its slab; or no corners
   }

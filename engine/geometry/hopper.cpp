@@ -26,8 +26,11 @@ Hopper<2>::Hopper(double W, double w, double theta_left_rad, double theta_right_
 
 bool Hopper<2>::contains(const Vec<2>& p) const {
   const double x = p[0], y = p[1];
+  // Below the orifice plane there are no walls: a particle there has exited (a crossing of the
+  // plane outside the orifice is caught on exit), and it may fly out sideways beyond +-W/2
+  // while it falls (a soft polygon flung off an orifice corner does).
+  if (y < 0) return true;
   if (std::fabs(x) >= W_ / 2) return false;
-  if (y < 0) return true;  // below the orifice plane: exited (crossing elsewhere is caught on exit)
   const double left = y < h_left_ ? -w_ / 2 - (W_ - w_) / 2 * y / h_left_ : -W_ / 2;
   const double right = y < h_right_ ? w_ / 2 + (W_ - w_) / 2 * y / h_right_ : W_ / 2;
   return x > left && x < right;

@@ -74,7 +74,8 @@ class Hopper<3> {
     }
     return Vec<3>(R_ * ex, R_ * ey, p[2] > 0 ? p[2] : 0.0);  // mantle, z >= 0
   }
-  bool contains(const Vec<3>& p) const { return std::hypot(p[0], p[1]) < R_; }
+  /// True inside the cylinder or below the base plane (no walls there; see the 2D hopper).
+  bool contains(const Vec<3>& p) const { return p[2] < 0 || std::hypot(p[0], p[1]) < R_; }
   double half_width() const { return R_; }
   double funnel_top() const { return 0.0; }
   double orifice_half_width() const { return r_orifice_; }

@@ -30,6 +30,7 @@ TEST(Hopper2D, OrificeEdgesAreCorners) {
   EXPECT_EQ(h.nearest_point(1, Vec<2>(2.9, -0.2)), Vec<2>(3, 0));
   EXPECT_TRUE(h.contains(Vec<2>(0, 5)));
   EXPECT_TRUE(h.contains(Vec<2>(10, -1)));  // below the plane: judged when it crosses
+  EXPECT_TRUE(h.contains(Vec<2>(26, -1)));  // and no side walls there: flung out sideways
   EXPECT_FALSE(h.contains(Vec<2>(26, 5)));
   const Hopper<2> funnel(50, 6, units::deg_to_rad(45), units::deg_to_rad(45));
   EXPECT_TRUE(funnel.contains(Vec<2>(3.5, 1)));
@@ -56,6 +57,7 @@ TEST(Hopper3D, BaseAnnulusRimAndMantle) {
   EXPECT_EQ(h.nearest_point(1, Vec<3>(12, 0, -1)), Vec<3>(12.5, 0, 0));  // mantle's bottom rim
   EXPECT_TRUE(h.contains(Vec<3>(12, 0, 3)));
   EXPECT_FALSE(h.contains(Vec<3>(9, 9, 3)));
+  EXPECT_TRUE(h.contains(Vec<3>(9, 9, -1)));  // below the base: no walls
 }
 
 template <int D>

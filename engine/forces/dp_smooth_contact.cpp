@@ -114,6 +114,16 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
   // Not for the rough core (l0/2 is within reach of a compressed edge, and the core has no
   // caps): the rough model has a narrower term of its own for this (rough_fold_barrier).
   for (int k = 0; folds_ && k < n; ++k) {
+    // Fast exit for the usual vertex: where the two edges at k meet at more than 90 degrees
+    // (u . v < 0), each fold vertex projects beyond the shared end k of the other edge (t > 1
+    // for edge prev -> k, t < 0 for k -> next; t - 1 and -t have the sign of -u . v), so only
+    // the caps can act, and they act only on an edge shorter than the width. The cap tests
+    // below compare the same squared lengths, so skipping changes no result (but for rounding
+    // of t at exactly 90 degrees, where the slab's distance is the cap's).
+    const Vec<2> u = s.x[p_.prev[k]] - s.x[k];
+    const Vec<2> v = s.x[p_.next[k]] - s.x[k];
+    const double w = width_[s.species[k]];
+    if (u.dot(v) < 0 && u.squaredNorm() >= w * w && v.squaredNorm() >= w * w) continue;
     edge_vertex<kMode>(s, f, p_.prev[k], p_.next[k], energy, power, max_ov, FoldCap::AtEnd);  // edge prev(k) -> k
     edge_vertex<kMode>(s, f, k, p_.prev[k], energy, power, max_ov, FoldCap::AtStart);         // edge k -> next(k)
   }

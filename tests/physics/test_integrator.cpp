@@ -98,5 +98,58 @@ TEST(Dissipation, DragOnlyNeverAddsEnergy2D) { check_dissipation_never_adds_ener
 TEST(Dissipation, FrictionOnlyNeverAddsEnergy2D) { check_dissipation_never_adds_energy<2>(0, 10.0); }
 TEST(Dissipation, FrictionOnlyNeverAddsEnergy3D) { check_dissipation_never_adds_energy<3>(0, 10.0); }
 
+/// Normal restitution of a head-on collision of a small and a large particle (friction only,
+/// far from the walls, no gravity). During the contact the relative coordinate is a damped
+/// linear oscillator, mu_r x'' = -k x - mu x' with k = E_sp/sigma_mn^2 (U = (E/2)(1 - r/s)^2)
+/// and mu_r the reduced mass (friction acts on the full relative velocity of both particles),
+/// and the contact ends at x = 0 after half a damped period: e = exp(-pi z / sqrt(1 - z^2)),
+/// z = mu / (2 sqrt(k mu_r)). The DP comparison in docs/validation.md rests on this number.
+template <int D>
+void check_head_on_restitution(double E_sp, double mu) {
+  SimConfig c = small_config(D, 2, 1.0, 0, mu);
+  c.W = 60;
+  c.E_sp = E_sp;
+  c.resolve_and_validate();
+  const Hopper<D> h = hopper_for<D>(c);
+  ParticleState<D> s;
+  s.sp = Species::bidisperse(D, c.size_ratio);
+  s.resize(2);
+  s.species = {0, 1};
+  const double m0 = s.sp.mass[0], m1 = s.sp.mass[1], reach = 0.5 * (s.sp.sigma[0] + s.sp.sigma[1]);
+  for (int k = 0; k < 2; ++k) s.inv_mass[k] = 1 / s.mass(k);
+  Vec<D> up = Vec<D>::Zero(), along = Vec<D>::Zero();
+  up[kUp<D>] = 20;
+  along[0] = 1;
+  s.x[0] = up - (0.5 * reach + 0.01) * along;
+  s.x[1] = up + (0.5 * reach + 0.01) * along;
+  const double v_rel = 0.7;
+  s.v[0] = (v_rel * m1 / (m0 + m1)) * along;  // centre-of-mass frame
+  s.v[1] = (-v_rel * m0 / (m0 + m1)) * along;
+  ForceField<D> ff(c, h);
+  ff.set_gravity(0);
+  ff.compute(s);
+  const double dt = 1e-5;
+  bool touched = false;
+  for (int k = 0; k < 1'000'000; ++k) {
+    velocity_verlet_step(s, ff, dt);
+    const bool touching = (s.x[1] - s.x[0]).norm() < reach;
+    if (touched && !touching) break;
+    touched = touched || touching;
+  }
+  ASSERT_TRUE(touched);
+  const double e = (s.v[1] - s.v[0]).dot(along) / v_rel;  // they approached at -v_rel
+  const double k = E_sp / (reach * reach), mu_r = m0 * m1 / (m0 + m1), z = mu / (2 * std::sqrt(k * mu_r));
+  ASSERT_LT(z, 1);
+  EXPECT_NEAR(e, std::exp(-units::pi * z / std::sqrt(1 - z * z)), 2e-3) << "z = " << z;
+  // and the momentum is the centre-of-mass frame's, zero
+  EXPECT_LT((m0 * s.v[0] + m1 * s.v[1]).norm(), 1e-12);
+}
+
+TEST(Dissipation, HeadOnFrictionalCollisionIsADampedOscillator2D) {
+  check_head_on_restitution<2>(1e5, 10 * std::sqrt(10.0));
+  check_head_on_restitution<2>(1e4, 10.0);
+}
+TEST(Dissipation, HeadOnFrictionalCollisionIsADampedOscillator3D) { check_head_on_restitution<3>(1e5, 30.0); }
+
 }  // namespace
 }  // namespace beverloo

@@ -49,9 +49,24 @@ CampaignFits fit_campaign(db::Database& db) {
     if (!index.count(key)) {
       Series s;
       s.key = key;
+      s.model = job.value("model", std::string("sp"));
       s.dimension = job["dimension"];
       s.N = job["N"];
-      s.E_sp = job["E_sp"];
+      std::ostringstream stiffness;
+      if (s.is_dp()) {
+        const json& dp = job.at("dp");
+        s.n_v = dp.at("n_v");
+        s.K_a = dp.at("K_a");
+        s.K_l = dp.at("K_l");
+        s.K_b = dp.at("K_b");
+        s.E_c = dp.at("E_c");
+        stiffness << "DP " << (s.model == "dp_rough" ? "rough" : "smooth") << " K_l=" << fmt(s.K_l) << " K_b=" << fmt(s.K_b)
+                  << " E_c=" << fmt(s.E_c);
+      } else {
+        s.E_sp = job.at("E_sp");
+        stiffness << "SP E_sp=" << fmt(s.E_sp);
+      }
+      s.stiffness = stiffness.str();
       s.zeta = job["zeta"];
       s.mu = job["mu"];
       s.lambda = s.mu > 0 ? s.zeta / s.mu : (s.zeta > 0 ? INFINITY : NAN);
@@ -62,7 +77,7 @@ CampaignFits fit_campaign(db::Database& db) {
       base.erase("mu");
       s.base_key = sha256_hex(base.dump());
       std::ostringstream label;
-      label << s.dimension << "D SP E_sp=" << fmt(s.E_sp) << " lambda=" << format_lambda(s.lambda) << " (zeta="
+      label << s.dimension << "D " << s.stiffness << " lambda=" << format_lambda(s.lambda) << " (zeta="
             << fmt(s.zeta, 3) << ", mu=" << fmt(s.mu, 3) << ")";
       if (s.theta_left != 90 || s.theta_right != 90) label << " theta=" << fmt(s.theta_left) << "/" << fmt(s.theta_right);
       label << " N=" << s.N;
@@ -116,7 +131,7 @@ CampaignFits fit_campaign(db::Database& db) {
     Crossover& g = groups[gkey];
     g.key = sha256_hex(gkey);
     g.dimension = s.dimension;
-    g.label = std::to_string(s.dimension) + "D SP E_sp=" + fmt(s.E_sp) + " zeta=" + fmt(s.zeta, 3) + " N=" + std::to_string(s.N);
+    g.label = std::to_string(s.dimension) + "D " + s.stiffness + " zeta=" + fmt(s.zeta, 3) + " N=" + std::to_string(s.N);
     if (std::isinf(s.lambda))
       g.limit_inf = &s;
     else if (s.fit)
@@ -150,14 +165,25 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
   db.exec("DELETE FROM series_points; DELETE FROM beverloo_fit_results; DELETE FROM crossover_fit_results;");
   db::Statement ins = db.prepare(
       "INSERT INTO beverloo_fit_results (series_key, label, dimension, N, E_sp, zeta, mu, lambda, theta_w_left_deg, "
-      "theta_w_right_deg, points, clogged_points, C, C_err, k, k_err, beta, beta_err, chi2_red, message) VALUES "
-      "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20)");
+      "theta_w_right_deg, points, clogged_points, C, C_err, k, k_err, beta, beta_err, chi2_red, message, model, n_v, "
+      "K_a, K_l, K_b, E_c) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, "
+      "?20, ?21, ?22, ?23, ?24, ?25, ?26)");
   db::Statement pt = db.prepare(
       "INSERT INTO series_points (series_key, w, Q, Q_err, replicas, clogged) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   for (const Series& s : fits.series) {
     int flowing = 0;
     for (const auto& p : s.points) flowing += p.flowing();
-    ins.bind(1, s.key).bind(2, s.label).bind(3, s.dimension).bind(4, s.N).bind(5, s.E_sp).bind(6, s.zeta).bind(7, s.mu);
+    auto real_or_null = [&](int col, double v) {
+      if (std::isnan(v)) ins.bind_null(col); else ins.bind(col, v);
+    };
+    ins.bind(1, s.key).bind(2, s.label).bind(3, s.dimension).bind(4, s.N).bind(6, s.zeta).bind(7, s.mu);
+    real_or_null(5, s.E_sp);
+    ins.bind(21, s.model);
+    if (s.is_dp()) ins.bind(22, s.n_v); else ins.bind_null(22);
+    real_or_null(23, s.K_a);
+    real_or_null(24, s.K_l);
+    real_or_null(25, s.K_b);
+    real_or_null(26, s.E_c);
     if (std::isnan(s.lambda)) ins.bind_null(8); else ins.bind(8, s.lambda);
     ins.bind(9, s.theta_left).bind(10, s.theta_right).bind(11, flowing).bind(12, s.clogged_points());
     if (s.fit) {
@@ -196,12 +222,14 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
 void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   std::filesystem::create_directories(dir);
   std::ostringstream csv, md, xcsv, xmd;
-  csv << "label,dimension,N,E_sp,zeta,mu,lambda,points,clogged_points,C,C_err,k,k_err,beta,beta_err,chi2_red,message\n";
+  csv << "label,model,dimension,N,E_sp,K_l,K_b,E_c,zeta,mu,lambda,points,clogged_points,C,C_err,k,k_err,beta,beta_err,"
+         "chi2_red,message\n";
   md << "| series | points | clogged | C | k | beta | chi2_red |\n|---|---|---|---|---|---|---|\n";
   for (const Series& s : fits.series) {
     int flowing = 0;
     for (const auto& p : s.points) flowing += p.flowing();
-    csv << '"' << s.label << "\"," << s.dimension << ',' << s.N << ',' << fmt(s.E_sp, 10) << ',' << fmt(s.zeta, 10) << ','
+    csv << '"' << s.label << "\"," << s.model << ',' << s.dimension << ',' << s.N << ',' << fmt(s.E_sp, 10) << ','
+        << fmt(s.K_l, 10) << ',' << fmt(s.K_b, 10) << ',' << fmt(s.E_c, 10) << ',' << fmt(s.zeta, 10) << ','
         << fmt(s.mu, 10) << ',' << format_lambda(s.lambda) << ',' << flowing << ',' << s.clogged_points() << ',';
     if (s.fit)
       csv << fmt(s.fit->C, 8) << ',' << fmt(s.fit->C_err, 4) << ',' << fmt(s.fit->k, 8) << ',' << fmt(s.fit->k_err, 4) << ','

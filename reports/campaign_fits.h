@@ -4,6 +4,7 @@
 /// pooled by inverse-variance weighting, clogged points left out of the fit but reported), one
 /// Beverloo fit per series, and one crossover fit per group of series that differ only in
 /// lambda = zeta/mu (same other parameters and the same drag scale for finite lambda).
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,8 +24,14 @@ struct SeriesPoint {
 
 struct Series {
   std::string key, label, base_key;  ///< base_key: without zeta and mu (finds the lambda limits)
+  std::string model = "sp";          ///< sp, dp_smooth, dp_rough
+  std::string stiffness;             ///< the model's stiffness parameters, e.g. "SP E_sp=100"
   int dimension = 2, N = 0;
-  double E_sp = 0, zeta = 0, mu = 0, lambda = 0, theta_left = 90, theta_right = 90;
+  int n_v = 0;                       ///< DP only (0 for SP)
+  double E_sp = NAN;                 ///< SP only (NaN for DP)
+  double K_a = NAN, K_l = NAN, K_b = NAN, E_c = NAN;  ///< DP only (NaN for SP)
+  double zeta = 0, mu = 0, lambda = 0, theta_left = 90, theta_right = 90;
+  bool is_dp() const { return model != "sp"; }
   std::vector<SeriesPoint> points;  ///< sorted by w
   std::vector<std::string> job_keys;
   std::optional<BeverlooFit> fit;

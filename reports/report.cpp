@@ -38,6 +38,7 @@ struct Figure {
   std::string name, title, xlabel, ylabel, extra;  ///< extra: more "set" lines (log scales, ...)
   std::ostringstream data;
   std::vector<std::string> plots;  ///< plot clauses; "DATA" stands for the data file
+  std::string body;                ///< instead of plots: whole gnuplot commands (multiplot), "DATA" as above
   int blocks = 0;
   void begin_block(const std::string& header) {
     if (blocks++) data << "\n\n";
@@ -52,14 +53,15 @@ void render(Figure& f, const fs::path& dir) {
   gp << "# " << f.title << "\n# Rendered by beverloo report; edit and run `gnuplot " << f.name << ".gp` in this directory.\n"
      << "set title \"" << f.title << "\" noenhanced font ',11'\nset xlabel \"" << f.xlabel << "\" noenhanced\n"
      << "set ylabel \"" << f.ylabel << "\" noenhanced\nset key inside top left font ',9' noenhanced\nset grid\n" << f.extra;
-  std::string plot = "plot ";
-  for (std::size_t k = 0; k < f.plots.size(); ++k) {
-    std::string clause = f.plots[k];
-    for (std::size_t pos; (pos = clause.find("DATA")) != std::string::npos;) clause.replace(pos, 4, "'" + dat + "'");
-    plot += (k ? ", \\\n     " : "") + clause;
-  }
+  auto with_data = [&](std::string text) {
+    for (std::size_t pos; (pos = text.find("DATA")) != std::string::npos;) text.replace(pos, 4, "'" + dat + "'");
+    return text;
+  };
+  std::string plot = f.body.empty() ? "plot " : with_data(f.body);
+  for (std::size_t k = 0; f.body.empty() && k < f.plots.size(); ++k) plot += (k ? ", \\\n     " : "") + with_data(f.plots[k]);
+  // the commands once per terminal (replot cannot repeat a multiplot)
   gp << "set terminal svg size 900,600 dynamic background rgb 'white'\nset output '" << f.name << ".svg'\n" << plot
-     << "\nset terminal pngcairo size 900,600\nset output '" << f.name << ".png'\nreplot\nunset output\n";
+     << "\nset terminal pngcairo size 900,600\nset output '" << f.name << ".png'\n" << plot << "\nunset output\n";
   write_text_atomically((dir / (f.name + ".gp")).string(), gp.str());
   const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + f.name + ".gp' 2> '" + f.name + ".log'";
   const int rc = std::system(cmd.c_str());
@@ -166,29 +168,73 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
     }
     made.push_back(finish(f, block, dir, "needs series at several finite lambda > 0 (a lambda sweep)"));
   }
-  // 4. k versus E_sp, per dissipation setting
-  {
-    Figure f("k_vs_Esp",
-             "Offset k versus stiffness E_sp",
-             "E_sp", "k", "set logscale x\n");
+  // 4. k versus stiffness, per dissipation setting: E_sp for SP, K_b for DP (the paper's softness
+  // axes; DP groups also keep K_l and E_c fixed)
+  for (const bool dp : {false, true}) {
+    Figure f(dp ? "k_vs_Kb" : "k_vs_Esp", dp ? "Offset k versus bending stiffness K_b (DP)" : "Offset k versus stiffness E_sp (SP)",
+             dp ? "K_b" : "E_sp", "k", "set logscale x\n");
+    auto stiffness = [dp](const Series* s) { return dp ? s->K_b : s->E_sp; };
     std::map<std::string, std::vector<const Series*>> by;
-    for (const Series& s : fits.series)
-      if (s.fit) by[std::to_string(s.dimension) + "D lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N)].push_back(&s);
+    for (const Series& s : fits.series) {
+      if (!s.fit || s.is_dp() != dp) continue;
+      std::string label = std::to_string(s.dimension) + "D ";
+      if (dp) label += s.model + " K_l=" + num(s.K_l) + " E_c=" + num(s.E_c) + " ";
+      by[label + "lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N)].push_back(&s);
+    }
     int block = 0;
     for (auto& [label, list] : by) {
-      std::set<double> esp;
-      for (const Series* s : list) esp.insert(s->E_sp);
-      if (esp.size() < 2) continue;
-      std::sort(list.begin(), list.end(), [](const Series* a, const Series* b) { return a->E_sp < b->E_sp; });
-      f.begin_block(label + ": E_sp k k_err");
-      for (const Series* s : list) f.data << num(s->E_sp) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
+      std::set<double> values;
+      for (const Series* s : list) values.insert(stiffness(s));
+      if (values.size() < 2) continue;
+      std::sort(list.begin(), list.end(), [&](const Series* a, const Series* b) { return stiffness(a) < stiffness(b); });
+      f.begin_block(label + (dp ? ": K_b k k_err" : ": E_sp k k_err"));
+      for (const Series* s : list) f.data << num(stiffness(s)) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
       f.plots.push_back("DATA index " + std::to_string(block++) + " using 1:2:3 with yerrorlines pt 7 title \"" + label + "\"");
     }
-    made.push_back(finish(f, block, dir, "needs fitted series at two or more E_sp with the other parameters equal"));
+    made.push_back(finish(f, block, dir,
+                          dp ? "needs fitted DP series at two or more K_b with the other parameters equal"
+                             : "needs fitted SP series at two or more E_sp with the other parameters equal"));
   }
-  // 5. k heat map over (K_l, K_b): a DP observable
-  made.push_back({"k_heatmap_Kl_Kb", "Offset k over (K_l, K_b)", false,
-                  "needs deformable-particle (DP) results; this engine has the SP model only so far"});
+  // 5. k heat map over (K_l, K_b), one panel per DP group (model, E_c, lambda, N, angles)
+  {
+    Figure f("k_heatmap_Kl_Kb", "Offset k over (K_l, K_b) (DP)", "K_l", "K_b");
+    std::map<std::string, std::vector<const Series*>> by;
+    for (const Series& s : fits.series)
+      if (s.fit && s.is_dp())
+        by[s.model + " E_c=" + num(s.E_c) + " lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N) +
+           (s.theta_left != 90 || s.theta_right != 90 ? " theta=" + num(s.theta_left) + "/" + num(s.theta_right) : "")]
+            .push_back(&s);
+    std::vector<std::pair<std::string, std::vector<const Series*>>> panels;
+    double k_lo = INFINITY, k_hi = -INFINITY;
+    for (auto& [label, list] : by) {
+      std::set<std::pair<double, double>> grid;
+      for (const Series* s : list) grid.insert({s->K_l, s->K_b});
+      if (grid.size() < 2 || panels.size() == 4) continue;  // at most four panels; all fits are in the tables
+      for (const Series* s : list) k_lo = std::min(k_lo, s->fit->k), k_hi = std::max(k_hi, s->fit->k);
+      panels.emplace_back(label, list);
+    }
+    std::ostringstream body;
+    if (!panels.empty()) {
+      body << "set logscale xy\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\nset palette rgb 33,13,10\n"
+           << "set cblabel 'k'\nset cbrange [" << num(k_lo) << ":" << num(k_hi > k_lo ? k_hi : k_lo + 1) << "]\n"
+           << "set multiplot layout 1," << panels.size() << " title \"" << f.title << "\" noenhanced\n";
+      int block = 0;
+      for (const auto& [label, list] : panels) {
+        f.begin_block(label + ": K_l K_b k k_err");
+        for (const Series* s : list)
+          f.data << num(s->K_l) << " " << num(s->K_b) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
+        body << "set title \"" << label << "\" noenhanced font ',9'\n"
+             << "plot DATA index " << block << " using 1:2:3 with points pt 5 ps 5 palette notitle, \\\n"
+             << "     DATA index " << block << " using 1:2:(sprintf('%.2f', $3)) with labels offset 0,2 font ',8' notitle\n";
+        ++block;
+      }
+      body << "unset multiplot";
+      f.body = body.str();
+      f.blocks = block;
+    }
+    made.push_back(finish(f, static_cast<int>(panels.size()), dir,
+                          "needs fitted DP series at two or more (K_l, K_b) with the other parameters equal"));
+  }
   // 6. velocity profiles for several w
   {
     Figure f("velocity_profiles",

@@ -26,6 +26,10 @@ INSERT INTO attempts (id, job_key, attempt_no, token, executor, host, pid, state
 INSERT INTO results (job_key, attempt_id, status, Q, Q_err, Q_rel_err, window_start, window_end, exits_in_window,
                      exits_total, clogged, dt, steps, wall_seconds, summary_json)
   VALUES ('k1', 1, 'converged', 4.5, 0.1, 0.022, 20, 100, 300, 400, 0, 1e-3, 100000, 12.5, '{}');
+INSERT INTO beverloo_fit_results (series_key, label, dimension, N, E_sp, zeta, mu, lambda, theta_w_left_deg,
+                                  theta_w_right_deg, points, clogged_points, C, k, beta)
+  VALUES ('s1', '2D SP E_sp=100 lambda=0.1', 2, 100, 100, 0.1, 1, 0.1, 90, 90, 4, 0, 0.4, 1.5, 0.9);
+INSERT INTO series_points VALUES ('s1', 4, 4.5, 0.1, 1, 0);
 SQL
 } | sqlite3 "$D/campaign.sqlite"
 before=$(sqlite3 "$D/campaign.sqlite" "SELECT * FROM attempts ORDER BY id")
@@ -38,5 +42,7 @@ after=$(sqlite3 "$D/campaign.sqlite" "SELECT id, job_key, attempt_no, token, exe
 [ "$(sqlite3 "$D/campaign.sqlite" "SELECT r.Q FROM results r JOIN attempts a ON a.id = r.attempt_id")" = 4.5 ] || fail "results lost their attempt"
 sqlite3 "$D/campaign.sqlite" "SELECT slurm_job_id, slurm_state, slurm_restarts FROM attempts; SELECT count(*) FROM slurm_submissions" > /dev/null \
   || fail "new columns missing"
+[ "$(sqlite3 "$D/campaign.sqlite" "SELECT model, E_sp, K_b IS NULL, beta FROM beverloo_fits")" = "sp|100.0|1|0.9" ] \
+  || fail "fits lost in the upgrade: $(sqlite3 "$D/campaign.sqlite" "SELECT * FROM beverloo_fits")"
 grep -q "1 jobs back to pending" "$WORK/out" || fail "retry after the upgrade: $(cat "$WORK/out")"
-echo "ok  schema 3 -> $(sqlite3 "$D/campaign.sqlite" "PRAGMA user_version"): attempts, results and their references intact"
+echo "ok  schema 3 -> $(sqlite3 "$D/campaign.sqlite" "PRAGMA user_version"): attempts, results, fits and their references intact"

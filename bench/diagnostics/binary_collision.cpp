@@ -1,7 +1,7 @@
 // Diagnostic: how inelastic is one collision of two bodies (a small and a large one) of a job's
-// model, without gravity or walls? Tests the hypothesis of docs/validation.md that kinetic
-// friction between light DP vertices makes polygon collisions nearly elastic where SP
-// collisions at the same mu are strongly damped. The bodies approach along x at relative speed
+// model, without gravity or walls? Behind docs/validation.md's account of the friction-only
+// DP/SP difference: kinetic friction between light DP vertices turns far less of a collision's
+// energy into heat than SP friction at the same mu. The bodies approach along x at relative speed
 // v_rel with impact parameter b (in units of the sum of their radii); each DP orientation is
 // random (averages over `samples` orientations). Printed per speed, means over the samples:
 //   e_n      normal restitution of the centre-of-mass velocities (along the line of centres at

@@ -38,21 +38,13 @@ struct Bodies {
   double m[2];
 };
 
-Bodies sp_bodies(const ParticleState<2>& s) {
+// Bodies `first` and `second` of a body-level state (SP particles, or DP centroids from
+// DpSystem::sync_bodies), in that order.
+Bodies bodies_of(const ParticleState<2>& s, int first, int second) {
   Bodies b;
-  for (int k = 0; k < 2; ++k) b.x[k] = s.x[k], b.v[k] = s.v[k], b.m[k] = s.mass(k);
-  return b;
-}
-
-Bodies dp_bodies(const DpSystem& dp) {
-  Bodies b;
-  const PolygonSet& P = dp.polygons();
-  const auto& s = dp.verts();
   for (int k = 0; k < 2; ++k) {
-    b.x[k].setZero(), b.v[k].setZero(), b.m[k] = 0;
-    for (int i = P.first[k]; i < P.first[k + 1]; ++i) b.x[k] += s.x[i], b.v[k] += s.v[i], b.m[k] += s.mass(i);
-    b.x[k] /= P.first[k + 1] - P.first[k];
-    b.v[k] /= P.first[k + 1] - P.first[k];
+    const int m = k == 0 ? first : second;
+    b.x[k] = s.x[m], b.v[k] = s.v[m], b.m[k] = s.mass(m);
   }
   return b;
 }
@@ -137,7 +129,7 @@ int main(int argc, char** argv) {
         ForceField<2> ff(c, hopper);
         ff.set_gravity(0);
         ForceReport last = ff.compute(s);
-        o = collide([&] { last = velocity_verlet_step(s, ff, dt).forces; }, [&] { return sp_bodies(s); },
+        o = collide([&] { last = velocity_verlet_step(s, ff, dt).forces; }, [&] { return bodies_of(s, 0, 1); },
                     [&] { return (s.x[1] - s.x[0]).norm() < reach; },
                     [&] { return s.kinetic_energy() + last.potential(); });
       } else {
@@ -158,14 +150,10 @@ int main(int argc, char** argv) {
                     angle_l);
         dp.forces().set_gravity(0);
         ForceReport last = dp.forces().compute(dp.verts());
-        // read bodies as (small, large) so that the normal points from small to large as for SP
+        // bodies read as (small, large), so that the normal points from small to large as for SP
         auto read = [&] {
-          Bodies b = dp_bodies(dp), o;
-          for (int k = 0; k < 2; ++k) {
-            const int m = k == 0 ? small : large;
-            o.x[k] = b.x[m], o.v[k] = b.v[m], o.m[k] = b.m[m];
-          }
-          return o;
+          dp.sync_bodies(seed_bodies);
+          return bodies_of(seed_bodies, small, large);
         };
         o = collide([&] { last = velocity_verlet_step(dp.verts(), dp.forces(), dt).forces; }, read,
                     [&] { return last.U_contact > 0; }, [&] { return dp.verts().kinetic_energy() + last.potential(); });

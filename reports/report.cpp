@@ -230,7 +230,6 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
       }
       body << "unset multiplot";
       f.body = body.str();
-      f.blocks = block;
     }
     made.push_back(finish(f, static_cast<int>(panels.size()), dir,
                           "needs fitted DP series at two or more (K_l, K_b) with the other parameters equal"));

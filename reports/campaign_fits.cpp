@@ -184,7 +184,7 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
     real_or_null(24, s.K_l);
     real_or_null(25, s.K_b);
     real_or_null(26, s.E_c);
-    if (std::isnan(s.lambda)) ins.bind_null(8); else ins.bind(8, s.lambda);
+    real_or_null(8, s.lambda);
     ins.bind(9, s.theta_left).bind(10, s.theta_right).bind(11, flowing).bind(12, s.clogged_points());
     if (s.fit) {
       ins.bind(13, s.fit->C).bind(14, s.fit->C_err).bind(15, s.fit->k).bind(16, s.fit->k_err).bind(17, s.fit->beta)

@@ -78,6 +78,9 @@ struct DpParams {
   double K_l = 10.0;  ///< segment-length (perimeter) stiffness
   double K_b = 0.1;   ///< bending stiffness (K_b > 1e2: rigid limit)
   double E_c = 1e4;   ///< vertex-vertex (rough) or vertex-edge (smooth) contact stiffness
+  /// Smooth DP: width of an edge's circulo-line in units of the reference edge length l0
+  /// (physics.md 4: 0.1; the authors' code runs 0.2, docs/authors-model.md).
+  double contact_width = 0.1;
 };
 
 struct SimConfig {
@@ -97,6 +100,12 @@ struct SimConfig {
   double E_w = 1e4;     ///< wall stiffness
   double zeta = -1;     ///< viscous drag; required
   double mu = -1;       ///< kinetic friction; required
+  /// Kinetic friction split along the contact normal and the tangent (physics.md 10): unset,
+  /// each is mu (the text's full relative velocity); the authors' code runs mu_n = 0.
+  std::optional<double> mu_n, mu_t;
+  /// Drag as a rate times the mass, F = -drag_rate M v (per vertex: its mass), in 1/t0, added
+  /// to zeta's F = -zeta v. The authors' code runs this form (physics.md 10).
+  double drag_rate = 0;
   double gravity = 1.0; ///< in units of g (tests switch it off)
   DpParams dp;          ///< DP models only
   // --- numerics -----------------------------------------------------------------------
@@ -123,6 +132,9 @@ struct SimConfig {
   static SimConfig from_json(const nlohmann::json& j);
   /// Fully resolved parameters, defaults filled in, keys sorted: the job's identity.
   nlohmann::json to_json() const;
+  /// The canonical job without the settings that cannot change a finished result (the rows of
+  /// engine/parameters.cpp with in_key = false): what the job key hashes.
+  nlohmann::json key_json() const;
   /// Fills the dimension-dependent defaults and checks every field; throws ConfigError.
   void resolve_and_validate();
   /// The seed: explicit, or a hash of the canonical physics and protocol parameters (run
@@ -130,6 +142,10 @@ struct SimConfig {
   std::uint64_t effective_seed() const;
 
   bool is_dp() const { return model == "dp_smooth" || model == "dp_rough"; }
+  double mu_normal() const { return mu_n.value_or(mu); }
+  double mu_tangential() const { return mu_t.value_or(mu); }
+  /// Friction acts on the normal and tangential parts with different coefficients.
+  bool friction_split() const { return mu_normal() != mu_tangential(); }
   // Derived sizes (valid after resolve_and_validate).
   double sigma_small() const { return 2.0 / (1.0 + size_ratio); }
   double sigma_large() const { return size_ratio * sigma_small(); }

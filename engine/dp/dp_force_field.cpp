@@ -19,7 +19,7 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       bending_(p, shape, c.dp.K_b),
       walls_(hopper, list_, c.E_w, {shape.delta[0], shape.delta[1]}),
       gravity_(c.gravity),
-      drag_(c.zeta / shape.n_v),
+      drag_(drag_coefficients(c.zeta / shape.n_v, c.drag_rate, {shape.vertex_mass[0], shape.vertex_mass[1]})),
       corners_(hopper, p, shape, c.E_w),
       hopper_(hopper) {
   if (shape.smooth) {
@@ -29,14 +29,14 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     // area. At rest vertices two apart lie beyond both ends of each other's edges, so this acts
     // only on a folding polygon. Not in the paper: docs/validation.md.
     list_.set_groups(&p.owner, &p.first, 1);
-    smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, c.mu);
+    smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, FrictionLaw{c.mu_normal(), c.mu_tangential()});
   } else {
     // Rough: vertex disks of one polygon repel too, except neighbours along the ring (they
     // overlap by construction; the segment term holds them). At rest vertices two apart are
     // 2 l0 cos(pi/n_v) > l0 away, so this acts only on a polygon folding over itself, which soft
     // bending (K_b ~ 1e-2) otherwise lets happen. Not in the paper: docs/validation.md.
     list_.set_groups(&p.owner, &p.first, 1);
-    rough_ = std::make_unique<SpContact<2>>(list_, E_c, c.mu);
+    rough_ = std::make_unique<SpContact<2>>(list_, E_c, FrictionLaw{c.mu_normal(), c.mu_tangential()});
     rough_->set_friction_groups(&p.owner);
     rough_core_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_edge_core(list_, p, shape, E_c));
     rough_fold_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_fold_barrier(list_, p, shape, E_c));

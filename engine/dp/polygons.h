@@ -20,7 +20,7 @@ struct DpShape {
   int n_v = 16;
   double a0[2]{};           ///< reference area pi sigma^2 / 4
   double l0[2]{};           ///< reference edge length of the regular polygon of area a0
-  double delta[2]{};        ///< contact diameter: l0 (rough vertex disks) or 0.1 l0 (smooth edges)
+  double delta[2]{};        ///< contact diameter: l0 (rough vertex disks) or dp.contact_width l0 (smooth edges)
   double vertex_mass[2]{};  ///< M / n_v
   double circumradius[2]{}; ///< of the regular reference polygon
   bool smooth = true;

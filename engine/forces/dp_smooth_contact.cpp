@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "harmonic_overlap.h"
+#include "kinetic_friction.h"
 
 namespace beverloo {
 
@@ -71,8 +72,10 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
   }
   if constexpr (kMode != Mode::Repulsion) {
     if (p_.owner[a] == p_.owner[b]) return;  // kinetic friction acts between particles only
-    const Vec<2> rel = s.v[b] - (w_start * s.v[a] + w_end * s.v[an]);
-    const Vec<2> ff = -mu_ * rel;
+    const Vec<2> v_contact = w_start * s.v[a] + w_end * s.v[an];
+    const Vec<2> rel = s.v[b] - v_contact;
+    // split along the contact normal (the edge's normal, or the corner's vertex-vertex line)
+    const Vec<2> ff = law_.split() ? kinetic_friction_force<2>(law_, s.v[b], v_contact, dir) : Vec<2>(-law_.mu_t * rel);
     power += ff.dot(rel);
     f[b] += ff;
     f[a] -= w_start * ff;
@@ -143,12 +146,12 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
 }
 
 TermOutput DpSmoothContact::accumulate(const ParticleState<2>& s, VecArray<2>& f) {
-  return (friction_on_ && mu_ > 0) ? loop<Mode::RepulsionAndFriction>(s, f) : loop<Mode::Repulsion>(s, f);
+  return (friction_on_ && law_.active()) ? loop<Mode::RepulsionAndFriction>(s, f) : loop<Mode::Repulsion>(s, f);
 }
 
 void DpSmoothContact::friction_forces(const ParticleState<2>& s, VecArray<2>& out) const {
   out.assign(s.size(), Vec<2>::Zero());
-  if (mu_ > 0) loop<Mode::FrictionOnly>(s, out);
+  if (law_.active()) loop<Mode::FrictionOnly>(s, out);
 }
 
 }  // namespace beverloo

@@ -17,7 +17,8 @@
 ///
 /// Kinetic friction acts between the vertex and the contact point P on the edge:
 /// F_j = -mu (v_j - v_P), v_P = (1 - t) v_i + t v_next(i), split on the edge by the lever rule
-/// (dissipative: power -mu |v_j - v_P|^2 per contact; momentum conserving).
+/// (dissipative: power -mu |v_j - v_P|^2 per contact; momentum conserving). With a split law
+/// (mu_n != mu_t) the normal is the edge's (or, at a corner, the vertex-vertex line).
 ///
 /// Self-contact (a decision, not in the paper): the edges of a polygon also repel its own
 /// vertices but the edge's ends, without friction. At rest these lie beyond the ends of each
@@ -39,14 +40,16 @@
 #include "../dp/polygons.h"
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
+#include "kinetic_friction.h"
 
 namespace beverloo {
 
 class DpSmoothContact final : public ForceTerm<2> {
  public:
   /// The smooth model's contact: edges of width shape.delta, with corners and friction.
-  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c, double mu)
-      : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, mu, true, "dp_smooth_contact") {}
+  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c,
+                  FrictionLaw friction)
+      : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, friction, true, "dp_smooth_contact") {}
   /// The rough model's edge core: each edge a circulo-line of width l0/2 (half the vertex
   /// disks'), slabs only (the disks hold the corners), no friction, and energy scale E_c/4 so
   /// that its stiffness per unit overlap, E/width^2, is the disks' (the time step stays the
@@ -57,7 +60,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// paper: docs/validation.md.
   static DpSmoothContact rough_edge_core(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
                                          double E_c) {
-    return DpSmoothContact(list, p, core_widths(shape), kRoughCoreEnergyFraction * E_c, 0.0, false,
+    return DpSmoothContact(list, p, core_widths(shape), kRoughCoreEnergyFraction * E_c, FrictionLaw{}, false,
                            "dp_rough_edge_core");
   }
   static std::array<double, 2> core_widths(const DpShape& shape) { return {0.5 * shape.l0[0], 0.5 * shape.l0[1]}; }
@@ -74,7 +77,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   static DpSmoothContact rough_fold_barrier(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
                                             double E_c) {
     DpSmoothContact c(list, p, {kRoughFoldWidth * shape.l0[0], kRoughFoldWidth * shape.l0[1]},
-                      kRoughFoldWidth * kRoughFoldWidth * E_c, 0.0, false, "dp_rough_fold_barrier");
+                      kRoughFoldWidth * kRoughFoldWidth * E_c, FrictionLaw{}, false, "dp_rough_fold_barrier");
     c.pairs_ = false;
     c.folds_ = true;
     return c;
@@ -105,14 +108,15 @@ class DpSmoothContact final : public ForceTerm<2> {
   void edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
                    double& max_ov, FoldCap cap = FoldCap::None) const;
 
-  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c, double mu,
-                  bool corners, const char* name)
-      : list_(list), p_(p), width_(width), eps_(E_c), mu_(mu), corners_(corners), folds_(corners), name_(name) {}
+  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
+                  FrictionLaw friction, bool corners, const char* name)
+      : list_(list), p_(p), width_(width), eps_(E_c), law_(friction), corners_(corners), folds_(corners), name_(name) {}
 
   const NeighborList<2>& list_;
   const PolygonSet& p_;
   std::array<double, 2> width_;  ///< edge (and vertex) contact width per species
-  double eps_, mu_;
+  double eps_;
+  FrictionLaw law_;
   bool corners_;        ///< false: slabs only (the rough core and fold barrier)
   bool pairs_ = true;   ///< edge-vertex pairs from the list (all but the fold barrier)
   bool folds_;          ///< each edge against the vertex one beyond either end, same polygon

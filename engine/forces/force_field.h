@@ -25,8 +25,12 @@ template <int D>
 class ForceField {
  public:
   ForceField(const SimConfig& c, const Hopper<D>& hopper)
-      : list_(c.skin), contact_(list_, c.E_sp, c.mu), walls_(hopper, list_, c.E_w), gravity_(c.gravity),
-        drag_(c.zeta), hopper_(hopper) {}
+      : list_(c.skin),
+        contact_(list_, c.E_sp, FrictionLaw{c.mu_normal(), c.mu_tangential()}),
+        walls_(hopper, list_, c.E_w),
+        gravity_(c.gravity),
+        drag_(drag_coefficients(c.zeta, c.drag_rate, Species::bidisperse(D, c.size_ratio).mass)),
+        hopper_(hopper) {}
 
   /// Zeroes s.f, brings the list up to date and adds every term. O(N).
   ForceReport compute(ParticleState<D>& s) {

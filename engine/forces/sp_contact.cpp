@@ -3,12 +3,11 @@
 #include <cmath>
 
 #include "harmonic_overlap.h"
-#include "kinetic_friction.h"
 
 namespace beverloo {
 
 template <int D>
-template <bool kFriction>
+template <typename SpContact<D>::Friction kFriction>
 TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
   // species-pair tables: contact distance^2 and its inverse
   double sig2[2][2], inv_sig[2][2];
@@ -36,9 +35,10 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
       const double ov = 1.0 - r * inv_sig[si][sj];
       max_ov = ov > max_ov ? ov : max_ov;
       Vec<D> fij = (-dU_dr / r) * dx;  // on i, along x_i - x_j (repulsive)
-      if constexpr (kFriction) {
+      if constexpr (kFriction != Friction::None) {
         if (rubs(i, j)) {
-          const Vec<D> ff = kinetic_friction_force<D>(mu_, s.v[i], s.v[j]);
+          const Vec<D> ff = kFriction == Friction::Full ? kinetic_friction_force<D>(law_.mu_t, s.v[i], s.v[j])
+                                                        : kinetic_friction_force<D>(law_, s.v[i], s.v[j], Vec<D>(dx / r));
           power += ff.dot(s.v[i] - s.v[j]);
           fij += ff;
         }
@@ -54,7 +54,8 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
 
 template <int D>
 TermOutput SpContact<D>::accumulate(const ParticleState<D>& s, VecArray<D>& f) {
-  return (friction_on_ && mu_ > 0) ? loop<true>(s, f) : loop<false>(s, f);
+  if (!friction_on_ || !law_.active()) return loop<Friction::None>(s, f);
+  return law_.split() ? loop<Friction::Split>(s, f) : loop<Friction::Full>(s, f);
 }
 
 template <int D>
@@ -65,8 +66,9 @@ void SpContact<D>::friction_forces(const ParticleState<D>& s, VecArray<D>& out) 
     for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
       const int j = *p;
       const double sig = 0.5 * (s.sigma(i) + s.sigma(j));
-      if ((s.x[i] - s.x[j]).squaredNorm() >= sig * sig || !rubs(i, j)) continue;
-      const Vec<D> ff = kinetic_friction_force<D>(mu_, s.v[i], s.v[j]);
+      const Vec<D> dx = s.x[i] - s.x[j];
+      if (dx.squaredNorm() >= sig * sig || !rubs(i, j)) continue;
+      const Vec<D> ff = friction_on(s, i, j, dx, dx.norm());
       out[i] += ff;
       out[j] -= ff;
     }

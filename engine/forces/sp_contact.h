@@ -1,7 +1,8 @@
 #pragma once
 /// \file sp_contact.h
 /// \brief Soft-particle contacts: harmonic repulsion U = (E_sp/2)(1 - r/sigma_mn)^2 and kinetic
-/// friction on overlapping pairs, evaluated in one pass over the Verlet list.
+/// friction on overlapping pairs (full or split along the centre line, kinetic_friction.h),
+/// evaluated in one pass over the Verlet list.
 ///
 /// Why one pass: friction acts exactly on the pairs that overlap, so both parts share the
 /// distance test; a second loop over the list would double the memory traffic of the hottest
@@ -11,13 +12,15 @@
 
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
+#include "kinetic_friction.h"
 
 namespace beverloo {
 
 template <int D>
 class SpContact final : public ForceTerm<D> {
  public:
-  SpContact(const NeighborList<D>& list, double E_sp, double mu) : list_(list), eps_(E_sp), mu_(mu) {}
+  SpContact(const NeighborList<D>& list, double E_sp, FrictionLaw friction)
+      : list_(list), eps_(E_sp), law_(friction) {}
   std::string_view name() const override { return "sp_contact"; }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override;
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
@@ -28,14 +31,21 @@ class SpContact final : public ForceTerm<D> {
   void set_friction_groups(const std::vector<int>* group) { friction_group_ = group; }
   /// Largest relative overlap 1 - r/sigma_mn seen in the last accumulate().
   double max_overlap() const { return max_overlap_; }
-  double mu() const { return mu_; }
+  const FrictionLaw& friction() const { return law_; }
 
  private:
-  template <bool kFriction>
+  enum class Friction { None, Full, Split };
+  template <Friction kFriction>
   TermOutput loop(const ParticleState<D>& s, VecArray<D>& f);
+  /// The friction force on i from j (dx = x_i - x_j, r = |dx|).
+  Vec<D> friction_on(const ParticleState<D>& s, int i, int j, const Vec<D>& dx, double r) const {
+    if (!law_.split()) return kinetic_friction_force<D>(law_.mu_t, s.v[i], s.v[j]);
+    return kinetic_friction_force<D>(law_, s.v[i], s.v[j], Vec<D>(dx / r));
+  }
 
   const NeighborList<D>& list_;
-  double eps_, mu_;
+  double eps_;
+  FrictionLaw law_;
   bool friction_on_ = true;
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }

@@ -17,6 +17,8 @@ TimeStepChoice choose_time_step(const SimConfig& c) {
   TimeStepChoice t;
   t.period_min = std::numeric_limits<double>::infinity();
   t.tau_min = std::numeric_limits<double>::infinity();
+  // the damping time of the stronger friction coefficient (normal or tangential)
+  const double mu_max = std::max(c.mu_normal(), c.mu_tangential());
   auto period = [](double m, double k) { return 2 * units::pi * std::sqrt(m / k); };
   auto consider_period = [&](double T, const std::string& term) {
     if (T < t.period_min) {
@@ -41,7 +43,7 @@ TimeStepChoice choose_time_step(const SimConfig& c) {
         const double delta = 0.5 * (shape.delta[a] + shape.delta[b]);
         const std::string pair = std::string(names[a]) + "-" + names[b];
         consider_period(period(m_red, HarmonicOverlap::stiffness(c.dp.E_c, delta)), "dp.E_c (" + pair + " vertex contact)");
-        if (c.mu > 0) consider_tau(m_red / c.mu, "mu (kinetic friction, " + pair + " vertices)");
+        if (mu_max > 0) consider_tau(m_red / mu_max, "mu (kinetic friction, " + pair + " vertices)");
       }
       const std::string who = std::string(names[a]) + " vertex";
       consider_period(period(mv, HarmonicOverlap::stiffness(c.E_w, 0.5 * shape.delta[a])), "E_w (wall, " + who + ")");
@@ -50,7 +52,8 @@ TimeStepChoice choose_time_step(const SimConfig& c) {
       consider_period(period(0.5 * mv, c.dp.K_l * nv), "dp.K_l (segment length, " + who + ")");
       consider_period(period(mv, c.dp.K_a * l0 * l0), "dp.K_a (area, " + who + ")");
       if (c.dp.K_b > 0) consider_period(period(mv, 6 * c.dp.K_b / (nv * l0 * l0 * l0 * l0)), "dp.K_b (bending, " + who + ")");
-      if (c.zeta > 0) consider_tau(mv / (c.zeta / nv), "zeta (drag, " + who + ")");
+      if (c.zeta > 0 || c.drag_rate > 0)
+        consider_tau(mv / (c.zeta / nv + c.drag_rate * mv), std::string(c.drag_rate > 0 ? "zeta, drag_rate" : "zeta") + " (drag, " + who + ")");
     }
   } else {
     for (int a = 0; a < 2; ++a) {
@@ -59,12 +62,14 @@ TimeStepChoice choose_time_step(const SimConfig& c) {
         const std::string pair = std::string(names[a]) + "-" + names[b];
         consider_period(period(m_red, HarmonicOverlap::stiffness(c.E_sp, 0.5 * (sp.sigma[a] + sp.sigma[b]))),
                         "E_sp (" + pair + " contact)");
-        if (c.mu > 0) consider_tau(m_red / c.mu, "mu (kinetic friction, " + pair + ")");
+        if (mu_max > 0) consider_tau(m_red / mu_max, "mu (kinetic friction, " + pair + ")");
       }
       // wall: U = (E_w/2)(1 - d/(sigma/2))^2, contact distance sigma/2, infinite wall mass
       consider_period(period(sp.mass[a], HarmonicOverlap::stiffness(c.E_w, 0.5 * sp.sigma[a])),
                       std::string("E_w (wall, ") + names[a] + " particle)");
-      if (c.zeta > 0) consider_tau(sp.mass[a] / c.zeta, std::string("zeta (drag, ") + names[a] + " particle)");
+      if (c.zeta > 0 || c.drag_rate > 0)
+        consider_tau(sp.mass[a] / (c.zeta + c.drag_rate * sp.mass[a]),
+                    std::string(c.drag_rate > 0 ? "zeta, drag_rate" : "zeta") + " (drag, " + names[a] + " particle)");
     }
   }
   t.largest_accepted = std::min(t.period_min / kRefusePeriodFraction, t.tau_min);

@@ -40,6 +40,7 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       estimator_(c.run),
       pile_finder_(c.N) {
   ff_ = std::make_unique<ForceField<D>>(c_, hopper_);
+  body_drag_ = drag_coefficients(c_.zeta, c_.drag_rate, Species::bidisperse(D, c_.size_ratio).mass);
   if constexpr (D == 2) {
     if (c_.is_dp()) {
       dp_ = std::make_unique<DpSystem>(c_, hopper_);
@@ -256,7 +257,7 @@ RunResult HopperRun<D>::run() {
         if (dp_) dp_->body_friction(friction_scratch_);
       }
       if (!dp_) ff_->contact().friction_forces(s_, friction_scratch_);
-      obs_.sample(s_, t, friction_scratch_, c_.zeta);
+      obs_.sample(s_, t, friction_scratch_, body_drag_);
     }
     if (traj_ && step % traj_steps == 0) traj_->writer.write_frame(s_, t);
     if (step % kContainmentSteps == 0) check_containment();

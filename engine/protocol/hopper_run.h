@@ -110,6 +110,8 @@ class HopperRun {
   FlowObservables<D> obs_;
   FlowRateEstimator estimator_;
   VecArray<D> friction_scratch_;
+  /// drag coefficient of a whole particle (DP: polygon) per species, for the |F^zeta| observable
+  std::array<double, 2> body_drag_{};
   PileFinder<D> pile_finder_;
   std::vector<std::uint8_t> in_pile_;
   std::int64_t fire_iterations_ = 0;

@@ -24,7 +24,8 @@ void FlowObservables<D>::ensure_block(int b) {
 }
 
 template <int D>
-void FlowObservables<D>::sample(const ParticleState<D>& s, double t, const VecArray<D>& friction, double zeta) {
+void FlowObservables<D>::sample(const ParticleState<D>& s, double t, const VecArray<D>& friction,
+                                const std::array<double, 2>& drag_coefficient) {
   const int b = static_cast<int>(std::floor(t / block_length_));
   ensure_block(b);
   double* sc = &block_scalars[b * kScalars];
@@ -36,7 +37,7 @@ void FlowObservables<D>::sample(const ParticleState<D>& s, double t, const VecAr
   for (int i = 0; i < n; ++i) {
     const double h = s.x[i][kUp<D>], lat = Hopper<D>::lateral(s.x[i]);
     if (h > 0 && h < w_ && lat < w_) count += 1;
-    drag += zeta * s.v[i].norm();
+    drag += drag_coefficient[s.species[i]] * s.v[i].norm();
     fric += friction[i].norm();
     if (lat >= cut) continue;
     const double vg = -s.v[i][kUp<D>];

@@ -29,7 +29,8 @@ class FlowObservables {
  public:
   FlowObservables(const SimConfig& c);
   /// One sample at time t; friction holds the friction force of each particle.
-  void sample(const ParticleState<D>& s, double t, const VecArray<D>& friction, double zeta);
+  /// drag_coefficient: per species, of a particle (DP: of a whole polygon)
+  void sample(const ParticleState<D>& s, double t, const VecArray<D>& friction, const std::array<double, 2>& drag_coefficient);
   /// Averages over the blocks that start at or after t_start.
   ObservableSummary summarize(double t_start) const;
 

@@ -2,6 +2,7 @@
 #include "sweep.h"
 
 #include "engine/integrate/time_step.h"
+#include "engine/parameters.h"
 
 #include <openssl/evp.h>
 
@@ -23,13 +24,15 @@ struct Tagged {
 };
 using Point = std::map<std::string, Tagged>;
 
+/// The sweepable rows of the parameter table, and the sweep's own labels lambda and
+/// dissipation_scale (they set zeta and mu, docs/sweeps.md).
 const std::set<std::string>& sweepable() {
-  static const std::set<std::string> names = {
-      "model", "dimension", "N", "size_ratio", "W", "w", "theta_w_deg", "theta_w_left_deg", "theta_w_right_deg",
-      "E_sp", "E_w", "zeta", "mu", "gravity", "dt", "skin", "max_overlap", "initial_packing_fraction", "reinject",
-      "seed", "replica", "lambda", "dissipation_scale", "run.t_max", "run.target_rel_err", "run.t_clog",
-      "run.min_transient", "run.min_window", "run.check_interval", "run.rate_bin",
-      "dp.n_v", "dp.K_a", "dp.K_l", "dp.K_b", "dp.E_c"};
+  static const std::set<std::string> names = [] {
+    std::set<std::string> n = {"lambda", "dissipation_scale"};
+    for (const ParamSpec& p : job_parameters())
+      if (p.sweepable) n.insert(std::string(p.path));
+    return n;
+  }();
   return names;
 }
 std::string known_list() {
@@ -221,14 +224,9 @@ std::string sha256_hex(const std::string& bytes) {
 }
 
 std::string job_key(const SimConfig& c) {
-  json j = c.to_json();
-  // settings that cannot change a finished run's result: checkpoint cadence, trajectory
-  // output, the Verlet skin (force sums do not depend on the list) and the blow-up threshold
-  j["run"].erase("checkpoint_interval");
-  j["run"].erase("trajectory_every_steps");
-  j.erase("skin");
-  j.erase("max_overlap");
-  return sha256_hex(j.dump() + "\nengine " BEVERLOO_VERSION);
+  // without the settings that cannot change a finished run's result (checkpoint cadence,
+  // trajectory output, the Verlet skin, the blow-up threshold: engine/parameters.cpp)
+  return sha256_hex(c.key_json().dump() + "\nengine " BEVERLOO_VERSION);
 }
 
 Sweep Sweep::load(const std::string& path, std::string* text) {

@@ -209,8 +209,15 @@ void SimConfig::resolve_and_validate() {
   // a split equal to mu is no split: the canonical job (and its key) does not carry it
   if (mu_n && *mu_n == mu) mu_n.reset();
   if (mu_t && *mu_t == mu) mu_t.reset();
-  for (const ParamSpec& p : job_parameters())
-    if (applies(p.models, model) && p.path != "theta_w_deg") check_range(p, *this);
+  for (const ParamSpec& p : job_parameters()) {
+    if (!applies(p.models, model) || p.path == "theta_w_deg") continue;
+    check_range(p, *this);
+    if (p.type == ParamType::Text && !p.allowed.empty() && p.path != "model") {
+      const std::string v = p.access.text(*this), all = "," + std::string(p.allowed) + ",";
+      if (all.find("," + v + ",") == std::string::npos)
+        throw ConfigError(std::string(p.path), "\"" + v + "\" is not one of " + std::string(p.allowed));
+    }
+  }
   // rules that relate two fields
   require(w < W, "w", "must be smaller than the container width W = " + num(W) + ", got " + num(w));
   if (dimension == 3)
@@ -243,7 +250,10 @@ nlohmann::json SimConfig::to_json() const {
       case ParamType::Integer: obj[k] = a.integer(self); break;
       case ParamType::Integer64: obj[k] = a.integer64(self); break;
       case ParamType::Boolean: obj[k] = a.boolean(self); break;
-      case ParamType::Text: obj[k] = a.text(self); break;
+      case ParamType::Text:
+        if (p.omit_at_default && a.text(self) == a.text(defaults)) continue;
+        obj[k] = a.text(self);
+        break;
       case ParamType::RealOrAuto:
         if (a.optional_real(self)) obj[k] = *a.optional_real(self); else obj[k] = "auto";
         break;

@@ -1,5 +1,7 @@
 #include "campaign_fits.h"
 
+#include "engine/parameters.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -69,16 +71,25 @@ CampaignFits fit_campaign(db::Database& db) {
       s.stiffness = stiffness.str();
       s.zeta = job["zeta"];
       s.mu = job["mu"];
-      s.lambda = s.mu > 0 ? s.zeta / s.mu : (s.zeta > 0 ? INFINITY : NAN);
+      s.drag_rate = job.value("drag_rate", 0.0);
+      if (job.contains("mu_n")) s.mu_n = job["mu_n"].get<double>();
+      if (job.contains("mu_t")) s.mu_t = job["mu_t"].get<double>();
+      s.lambda = derived::lambda(SimConfig::from_json(job)).value_or(NAN);
       s.theta_left = job["theta_w_left_deg"];
       s.theta_right = job["theta_w_right_deg"];
       json base = series_job;
       base.erase("zeta");
       base.erase("mu");
+      base.erase("drag_rate");
       s.base_key = sha256_hex(base.dump());
       std::ostringstream label;
       label << s.dimension << "D " << s.stiffness << " lambda=" << format_lambda(s.lambda) << " (zeta="
-            << fmt(s.zeta, 3) << ", mu=" << fmt(s.mu, 3) << ")";
+            << fmt(s.zeta, 3);
+      if (s.drag_rate > 0) label << ", drag_rate=" << fmt(s.drag_rate, 3);
+      label << ", mu=" << fmt(s.mu, 3);
+      if (s.mu_n) label << ", mu_n=" << fmt(*s.mu_n, 3);
+      if (s.mu_t) label << ", mu_t=" << fmt(*s.mu_t, 3);
+      label << ")";
       if (s.theta_left != 90 || s.theta_right != 90) label << " theta=" << fmt(s.theta_left) << "/" << fmt(s.theta_right);
       label << " N=" << s.N;
       s.label = label.str();
@@ -126,7 +137,7 @@ CampaignFits fit_campaign(db::Database& db) {
   // crossover groups: series sharing everything but zeta/mu, with the same drag for finite lambda
   std::map<std::string, Crossover> groups;
   for (const Series& s : out.series) {
-    if (!(s.zeta > 0)) continue;  // lambda = 0 joins below as a limit
+    if (!(s.zeta > 0) || s.drag_rate > 0) continue;  // lambda = 0 joins below as a limit
     const std::string gkey = s.base_key + "|zeta=" + fmt(s.zeta, 12);
     Crossover& g = groups[gkey];
     g.key = sha256_hex(gkey);
@@ -143,6 +154,43 @@ CampaignFits fit_campaign(db::Database& db) {
       if (s.zeta == 0 && s.base_key == gkey.substr(0, gkey.find('|')) &&
           std::fabs(s.mu / (10 * std::sqrt(10.0)) - scale) <= 1e-9 * scale)
         g.limit0 = &s;
+    std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
+    std::vector<double> l, b, e;
+    for (const Series* s : g.finite) {
+      l.push_back(s->lambda);
+      b.push_back(s->fit->beta);
+      e.push_back(s->fit->beta_err);
+    }
+    try {
+      g.fit = fit_crossover(g.dimension, l, b, e);
+    } catch (const FitError& err) {
+      g.message = err.what();
+    }
+    out.crossovers.push_back(g);
+  }
+  // The authors' lambda axis (docs/authors-model.md): drag as a rate times the mass, varied at a
+  // fixed friction; lambda = drag_rate M(sigma_avg) / mu_t. Groups: series sharing everything
+  // but the drag, at the same mu; the limits are the same mu without drag (lambda = 0) and a
+  // rate-drag series without friction (lambda = inf).
+  std::map<std::string, Crossover> by_friction;
+  for (const Series& s : out.series) {
+    if (!(s.drag_rate > 0) || s.zeta != 0 || !(s.mu > 0)) continue;
+    const std::string gkey = s.base_key + "|mu=" + fmt(s.mu, 12);
+    Crossover& g = by_friction[gkey];
+    g.key = sha256_hex(gkey);
+    g.dimension = s.dimension;
+    g.label = std::to_string(s.dimension) + "D " + s.stiffness + " mu=" + fmt(s.mu, 4) + " (drag rate) N=" +
+              std::to_string(s.N);
+    if (s.fit) g.finite.push_back(&s);
+  }
+  for (auto& [gkey, g] : by_friction) {
+    const std::string base = gkey.substr(0, gkey.find('|'));
+    const double mu = g.finite.empty() ? NAN : g.finite.front()->mu;
+    for (const Series& s : out.series) {
+      if (s.base_key != base) continue;
+      if (s.zeta == 0 && s.drag_rate == 0 && s.mu == mu) g.limit0 = &s;
+      if (s.mu == 0 && s.drag_rate > 0 && !g.limit_inf) g.limit_inf = &s;
+    }
     std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
     std::vector<double> l, b, e;
     for (const Series* s : g.finite) {

@@ -31,6 +31,8 @@ struct Series {
   double E_sp = NAN;                 ///< SP only (NaN for DP)
   double K_a = NAN, K_l = NAN, K_b = NAN, E_c = NAN;  ///< DP only (NaN for SP)
   double zeta = 0, mu = 0, lambda = 0, theta_left = 90, theta_right = 90;
+  double drag_rate = 0;                  ///< the authors' drag form (0: none)
+  std::optional<double> mu_n, mu_t;      ///< a friction split, when the job has one
   bool is_dp() const { return model != "sp"; }
   std::vector<SeriesPoint> points;  ///< sorted by w
   std::vector<std::string> job_keys;

@@ -10,12 +10,13 @@ template <int D>
 template <typename SpContact<D>::Friction kFriction>
 TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
   // species-pair tables: contact distance^2 and its inverse
-  double sig2[2][2], inv_sig[2][2];
+  double sig2[2][2], inv_sig[2][2], eps[2][2];
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) {
       const double sig = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]);
       sig2[a][b] = sig * sig;
       inv_sig[a][b] = 1.0 / sig;
+      eps[a][b] = scale_with_sigma_ ? eps_ * sig : eps_;
     }
   double energy = 0, power = 0, max_ov = 0;
   const int n = s.size();
@@ -31,7 +32,7 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
       if (r2 >= sig2[si][sj]) continue;
       const double r = std::sqrt(r2);
       double dU_dr;
-      energy += HarmonicOverlap::energy(eps_, r, inv_sig[si][sj], dU_dr);
+      energy += HarmonicOverlap::energy(eps[si][sj], r, inv_sig[si][sj], dU_dr);
       const double ov = 1.0 - r * inv_sig[si][sj];
       max_ov = ov > max_ov ? ov : max_ov;
       Vec<D> fij = (-dU_dr / r) * dx;  // on i, along x_i - x_j (repulsive)

@@ -19,8 +19,9 @@ namespace beverloo {
 template <int D>
 class SpContact final : public ForceTerm<D> {
  public:
-  SpContact(const NeighborList<D>& list, double E_sp, FrictionLaw friction)
-      : list_(list), eps_(E_sp), law_(friction) {}
+  /// scale_with_sigma: the pair's energy scale is E_sp sigma_mn (sp_contact_law "force")
+  SpContact(const NeighborList<D>& list, double E_sp, FrictionLaw friction, bool scale_with_sigma = false)
+      : list_(list), eps_(E_sp), law_(friction), scale_with_sigma_(scale_with_sigma) {}
   std::string_view name() const override { return "sp_contact"; }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override;
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
@@ -46,6 +47,7 @@ class SpContact final : public ForceTerm<D> {
   const NeighborList<D>& list_;
   double eps_;
   FrictionLaw law_;
+  bool scale_with_sigma_;
   bool friction_on_ = true;
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }

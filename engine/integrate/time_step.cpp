@@ -60,7 +60,8 @@ TimeStepChoice choose_time_step(const SimConfig& c) {
       for (int b = a; b < 2; ++b) {
         const double m_red = sp.mass[a] * sp.mass[b] / (sp.mass[a] + sp.mass[b]);
         const std::string pair = std::string(names[a]) + "-" + names[b];
-        consider_period(period(m_red, HarmonicOverlap::stiffness(c.E_sp, 0.5 * (sp.sigma[a] + sp.sigma[b]))),
+        const double sig_ab = 0.5 * (sp.sigma[a] + sp.sigma[b]);
+        consider_period(period(m_red, HarmonicOverlap::stiffness(c.pair_energy(sig_ab), sig_ab)),
                         "E_sp (" + pair + " contact)");
         if (mu_max > 0) consider_tau(m_red / mu_max, "mu (kinetic friction, " + pair + ")");
       }

@@ -1,5 +1,7 @@
 #include "result_file.h"
 
+#include "../parameters.h"
+
 #include "h5.h"
 
 namespace beverloo {
@@ -24,7 +26,11 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
       h5::attr(p, "E_w", c.E_w);
       h5::attr(p, "zeta", c.zeta);
       h5::attr(p, "mu", c.mu);
-      h5::attr(p, "lambda", c.mu > 0 ? c.zeta / c.mu : INFINITY);
+      h5::attr(p, "lambda", derived::lambda(c).value_or(INFINITY));  // docs/sweeps.md
+      // the authors' model options (physics.md 10), written only where a job uses them
+      if (c.mu_n) h5::attr(p, "mu_n", *c.mu_n);
+      if (c.mu_t) h5::attr(p, "mu_t", *c.mu_t);
+      if (c.drag_rate > 0) h5::attr(p, "drag_rate", c.drag_rate);
       h5::attr(p, "seed", static_cast<std::int64_t>(r.seed));
       h5::attr(p, "dt", r.dt);
     }

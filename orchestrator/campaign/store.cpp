@@ -1,5 +1,7 @@
 #include "store.h"
 
+#include "engine/parameters.h"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -97,12 +99,9 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
   std::int64_t index = 0;
   for (const JobSpec& j : jobs) {
     const SimConfig& c = j.config;
-    std::optional<double> lambda;
-    if (c.mu > 0) lambda = c.zeta / c.mu;
-    else if (c.zeta > 0) lambda = INFINITY;
+    const std::optional<double> lambda = derived::lambda(c);  // NULL when there is no dissipation
     std::optional<double> scale;
-    if (c.zeta > 0 && c.mu > 0) scale = std::sqrt(c.zeta * c.mu);
-    else if (c.zeta > 0 || c.mu > 0) scale = c.zeta + c.mu;
+    if (const double ds = derived::dissipation_scale(c); ds > 0) scale = ds;
     insert_job.bind(1, j.key)
         .bind(2, "jobs/" + j.key.substr(0, 16))
         .bind(3, j.job.dump())

@@ -1,5 +1,7 @@
 #include "migrations.h"
 
+#include "parameter_columns.h"
+
 #include "schema_migrations.inc"  // generated: kMigrations[] = {{"0001_init.sql", R"(...)"}, ...}
 
 namespace beverloo::db {
@@ -37,6 +39,7 @@ void open_store(Database& db) {
     db.exec(kMigrations[v].sql);
     db.exec("PRAGMA user_version=" + std::to_string(v + 1));
   }
+  sync_parameter_columns(db);  // typed columns of the parameters added after schema 0005
   if (db.scalar_int("SELECT count(*) FROM pragma_foreign_key_check") != 0)
     throw DbError("a schema migration left dangling references; the database is unchanged", SQLITE_CONSTRAINT);
   tx.commit();

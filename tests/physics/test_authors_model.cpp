@@ -147,6 +147,51 @@ TEST(AuthorsModel, SmoothDpTangentialFrictionIgnoresMotionAlongTheEdgeNormal) {
   EXPECT_NEAR(fr[an].dot(that), 0.5 * 4.0 * 0.3, 1e-9);
 }
 
+// --- the authors' SP contact: a constant force scale ---------------------------------------------
+
+TEST(AuthorsModel, ForceLawContactScalesTheEnergyWithTheContactDiameterAndMatchesItsGradient) {
+  SimConfig c = small_config(2, 2, 2.0);
+  c.E_sp = 140;
+  c.sp_contact_law = "force";
+  c.resolve_and_validate();
+  const Hopper<2> h = hopper_for<2>(c);
+  for (int sa : {0, 1})
+    for (int sb : {0, 1}) {
+      ParticleState<2> s;
+      s.sp = Species::bidisperse(2, c.size_ratio);
+      s.resize(2);
+      s.species = {std::uint8_t(sa), std::uint8_t(sb)};
+      const double sig = 0.5 * (s.sp.sigma[sa] + s.sp.sigma[sb]);
+      s.x[0] = Vec<2>(0.0, 5.0);
+      s.x[1] = Vec<2>(0.8 * sig, 5.0);
+      ForceField<2> ff(c, h);
+      ff.list().build(s, h);
+      VecArray<2> f(2, Vec<2>::Zero());
+      const double e = ff.terms()[0]->accumulate(s, f).energy;
+      // U = (E_sp sigma_mn / 2)(1 - r/sigma_mn)^2: the force E_sp (1 - r/sigma_mn), as spK in the code
+      EXPECT_NEAR(e, 0.5 * 140 * sig * 0.2 * 0.2, 1e-12) << sa << sb;
+      EXPECT_NEAR(f[1][0], 140 * 0.2, 1e-10) << "the force scale is the same for every pair";
+      // central differences
+      const double eps = 1e-6;
+      for (int d = 0; d < 2; ++d) {
+        auto energy_at = [&](double shift) {
+          ParticleState<2> t = s;
+          t.x[1][d] += shift;
+          ff.list().build(t, h);
+          VecArray<2> g(2, Vec<2>::Zero());
+          return ff.terms()[0]->accumulate(t, g).energy;
+        };
+        EXPECT_NEAR(f[1][d], -(energy_at(eps) - energy_at(-eps)) / (2 * eps), 1e-6);
+      }
+    }
+  // and the time step follows the stiffest pair (large-large: the largest energy per sigma^2 is
+  // the small pair's, E sigma / sigma^2)
+  SimConfig text = c;
+  text.sp_contact_law = "energy";
+  EXPECT_GT(choose_time_step(c).period_min, choose_time_step(text).period_min * 0.999)
+      << "E_sp sigma_mn with sigma_mn < 1 for the small pair: softer than E_sp";
+}
+
 // --- collisions: what the split takes and what it leaves ---------------------------------------
 
 struct Collision {
@@ -343,6 +388,12 @@ TEST(AuthorsModel, NewParametersAreCheckedAndOnlyWhereTheyApply) {
   EXPECT_EQ(error_field(j), "(accepted)");
   j["dp"] = {{"contact_width", 0}};
   EXPECT_EQ(error_field(j), "dp.contact_width");
+  j = base;
+  j["sp_contact_law"] = "spring";
+  EXPECT_EQ(error_field(j), "sp_contact_law");
+  j["model"] = "dp_smooth";
+  j["sp_contact_law"] = "force";
+  EXPECT_EQ(error_field(j), "sp_contact_law") << "an SP option";
   // defaults leave the canonical job as it was before these parameters existed
   const SimConfig c = SimConfig::from_json(base);
   EXPECT_FALSE(c.to_json().contains("drag_rate"));

@@ -1,0 +1,18 @@
+#pragma once
+/// \file parameter_columns.h
+/// \brief Typed SQL columns for job parameters added after schema 0005, straight from the
+/// parameter table (engine/parameters): each is a VIRTUAL generated column of `jobs` over the
+/// stored canonical job JSON (json_extract, with the row's SQL default where the JSON does not
+/// carry the field), and the `runs` view lists them. A new parameter therefore needs no
+/// hand-written migration: the store adds its column the first time a newer beverloo opens the
+/// campaign for writing (inside the migration transaction). Generated columns hold no data, so
+/// adding them never rewrites a row.
+#include "database.h"
+
+namespace beverloo::db {
+
+/// Adds the missing generated columns and, if any were added, rebuilds the `runs` view.
+/// Call inside the write transaction of open_store(). Idempotent.
+void sync_parameter_columns(Database& db);
+
+}  // namespace beverloo::db

@@ -12,18 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/errors.h"
+
 namespace beverloo {
-
-/// A configuration error: names the field (a JSON path) and the reason. Exit code 2.
-class ConfigError : public std::runtime_error {
- public:
-  ConfigError(const std::string& field, const std::string& reason)
-      : std::runtime_error(field + ": " + reason), field_(field) {}
-  const std::string& field() const { return field_; }
-
- private:
-  std::string field_;
-};
 
 /// FIRE minimiser constants (Bitzek et al. 2006, physics.md section 6.2).
 struct FireParams {

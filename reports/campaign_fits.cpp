@@ -1,4 +1,5 @@
 #include "campaign_fits.h"
+#include "core/digest.h"
 
 #include "engine/parameters.h"
 
@@ -9,7 +10,7 @@
 #include <map>
 #include <sstream>
 
-#include "engine/io/h5.h"
+#include "core/atomic_file.h"
 #include "orchestrator/sweep/sweep.h"
 
 namespace beverloo {
@@ -81,6 +82,8 @@ CampaignFits fit_campaign(db::Database& db) {
       base.erase("zeta");
       base.erase("mu");
       base.erase("drag_rate");
+      base.erase("mu_n");  // a friction split belongs to the friction: limits match on mu and mu_n
+      base.erase("mu_t");
       s.base_key = sha256_hex(base.dump());
       std::ostringstream label;
       label << s.dimension << "D " << s.stiffness << " lambda=" << format_lambda(s.lambda) << " (zeta="
@@ -138,7 +141,9 @@ CampaignFits fit_campaign(db::Database& db) {
   std::map<std::string, Crossover> groups;
   for (const Series& s : out.series) {
     if (!(s.zeta > 0) || s.drag_rate > 0) continue;  // lambda = 0 joins below as a limit
-    const std::string gkey = s.base_key + "|zeta=" + fmt(s.zeta, 12);
+    std::string gkey = s.base_key + "|zeta=" + fmt(s.zeta, 12);
+    if (s.mu_n) gkey += "|mu_n=" + fmt(*s.mu_n, 12);  // (absent for the text's model: keys as before)
+    if (s.mu_t) gkey += "|mu_t=" + fmt(*s.mu_t, 12);
     Crossover& g = groups[gkey];
     g.key = sha256_hex(gkey);
     g.dimension = s.dimension;
@@ -149,7 +154,8 @@ CampaignFits fit_campaign(db::Database& db) {
       g.finite.push_back(&s);
   }
   for (auto& [gkey, g] : groups) {
-    const double scale = std::stod(gkey.substr(gkey.find("|zeta=") + 6)) * std::sqrt(10.0);
+    const std::string zeta_part = gkey.substr(gkey.find("|zeta=") + 6);
+    const double scale = std::stod(zeta_part.substr(0, zeta_part.find('|'))) * std::sqrt(10.0);
     for (const Series& s : out.series)  // lambda = 0 at the same dissipation scale (mu = 10 sqrt 10 s)
       if (s.zeta == 0 && s.base_key == gkey.substr(0, gkey.find('|')) &&
           std::fabs(s.mu / (10 * std::sqrt(10.0)) - scale) <= 1e-9 * scale)
@@ -175,7 +181,8 @@ CampaignFits fit_campaign(db::Database& db) {
   std::map<std::string, Crossover> by_friction;
   for (const Series& s : out.series) {
     if (!(s.drag_rate > 0) || s.zeta != 0 || !(s.mu > 0)) continue;
-    const std::string gkey = s.base_key + "|mu=" + fmt(s.mu, 12);
+    const std::string gkey = s.base_key + "|mu=" + fmt(s.mu, 12) + "|mu_n=" + (s.mu_n ? fmt(*s.mu_n, 12) : "mu") +
+                             "|mu_t=" + (s.mu_t ? fmt(*s.mu_t, 12) : "mu");
     Crossover& g = by_friction[gkey];
     g.key = sha256_hex(gkey);
     g.dimension = s.dimension;
@@ -188,7 +195,9 @@ CampaignFits fit_campaign(db::Database& db) {
     const double mu = g.finite.empty() ? NAN : g.finite.front()->mu;
     for (const Series& s : out.series) {
       if (s.base_key != base) continue;
-      if (s.zeta == 0 && s.drag_rate == 0 && s.mu == mu) g.limit0 = &s;
+      if (!g.finite.empty() && s.zeta == 0 && s.drag_rate == 0 && s.mu == mu && s.mu_n == g.finite.front()->mu_n &&
+          s.mu_t == g.finite.front()->mu_t)
+        g.limit0 = &s;
       if (s.mu == 0 && s.drag_rate > 0 && !g.limit_inf) g.limit_inf = &s;
     }
     std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });

@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include "engine/io/h5.h"
+#include "core/atomic_file.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/db/migrations.h"
 #include "reports/campaign_fits.h"

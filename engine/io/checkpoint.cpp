@@ -3,6 +3,7 @@
 /// RNG state, step, every accumulator), written to checkpoint.h5.tmp, fsync'ed and renamed.
 #include <chrono>
 
+#include "core/atomic_file.h"
 #include "../protocol/hopper_run.h"
 #include "h5.h"
 

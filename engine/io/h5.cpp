@@ -1,5 +1,7 @@
 #include "h5.h"
 
+#include "core/atomic_file.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -148,35 +150,5 @@ std::string attr_string(hid_t loc, const std::string& name) {
 }
 
 }  // namespace h5
-
-namespace {
-void fsync_path(const std::string& path, bool directory) {
-  const int fd = ::open(path.c_str(), directory ? O_RDONLY | O_DIRECTORY : O_RDONLY);
-  if (fd < 0) throw IoError("cannot open " + path + " to sync: " + std::strerror(errno));
-  const int rc = ::fsync(fd);
-  ::close(fd);
-  if (rc != 0) throw IoError("fsync " + path + ": " + std::strerror(errno));
-}
-}  // namespace
-
-void commit_atomically(const std::string& tmp_path, const std::string& path) {
-  fsync_path(tmp_path, false);
-  if (std::rename(tmp_path.c_str(), path.c_str()) != 0)
-    throw IoError("rename " + tmp_path + " -> " + path + ": " + std::strerror(errno));
-  std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  fsync_path(dir.empty() ? "." : dir.string(), true);
-}
-
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError("cannot write " + tmp);
-    out << text;
-    out.flush();
-    if (!out) throw IoError("write failed: " + tmp);
-  }
-  commit_atomically(tmp, path);
-}
 
 }  // namespace beverloo

@@ -9,13 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace beverloo {
+#include "core/errors.h"
 
-/// An input/output failure (unwritable directory, corrupt file). Exit code 4.
-class IoError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace beverloo {
 
 class H5Handle {
  public:
@@ -73,11 +69,5 @@ std::string attr_string(hid_t loc, const std::string& name);
 /// Makes HDF5 quiet (we report errors ourselves); call once.
 void silence_errors();
 }  // namespace h5
-
-/// Writes a file atomically: the writer fills `path + ".tmp"`, which is then fsync'ed and
-/// renamed over `path`, and the directory fsync'ed. A crash leaves either the old or the new file.
-void commit_atomically(const std::string& tmp_path, const std::string& path);
-/// Writes text to path atomically.
-void write_text_atomically(const std::string& path, const std::string& text);
 
 }  // namespace beverloo

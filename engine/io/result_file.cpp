@@ -1,4 +1,5 @@
 #include "result_file.h"
+#include "core/atomic_file.h"
 
 #include "../parameters.h"
 

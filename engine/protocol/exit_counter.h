@@ -7,16 +7,11 @@
 #include <vector>
 
 #include "../geometry/hopper.h"
+#include "core/errors.h"
 #include "../state.h"
 #include "flow_record.h"
 
 namespace beverloo {
-
-/// A run that has become unphysical (NaN, escape, huge overlap). Exit code 3.
-class InstabilityError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 template <int D>
 class ExitCounter {

@@ -1,4 +1,5 @@
 #include "hopper_run.h"
+#include "core/atomic_file.h"
 
 #include <unistd.h>
 

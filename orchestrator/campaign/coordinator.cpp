@@ -1,4 +1,5 @@
 #include "coordinator.h"
+#include "core/atomic_file.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -20,8 +21,8 @@
 #include "executor.h"
 #include "orchestrator/slurm/slurm_executor.h"
 #include "job_files.h"
-#include "orchestrator/cli/exit_codes.h"
-#include "orchestrator/cli/signals.h"
+#include "core/failures.h"
+#include "core/stop_signal.h"
 #include "orchestrator/db/migrations.h"
 #include "store.h"
 
@@ -72,17 +73,7 @@ std::string last_log_line(const std::string& job_dir) {
   return last;
 }
 
-FailureClass classify(const WorkerExit& e) {
-  if (e.signaled) return FailureClass::Killed;
-  switch (e.code) {
-    case exit_code::kConfig: return FailureClass::InvalidParameters;
-    case exit_code::kUnstable: return FailureClass::BlowUp;
-    case exit_code::kIo: return FailureClass::Io;
-    case exit_code::kInterrupted: return FailureClass::Interrupted;
-    case job_files::kLockBusyExit: return FailureClass::Lost;
-    default: return FailureClass::Internal;
-  }
-}
+FailureClass classify(const WorkerExit& e) { return failure_from_exit(e.signaled, e.code); }
 
 class Coordinator {
  public:
@@ -184,11 +175,7 @@ class Coordinator {
   }
 
   static FailureClass class_of(const std::string& failure_class) {
-    if (failure_class == "blow_up") return FailureClass::BlowUp;
-    if (failure_class == "invalid_parameters") return FailureClass::InvalidParameters;
-    if (failure_class == "io") return FailureClass::Io;
-    if (failure_class == "interrupted") return FailureClass::Interrupted;
-    return FailureClass::Internal;
+    return failure_from_name(failure_class).value_or(FailureClass::Internal);
   }
   static bool is_scheduler_stop(FailureClass c) {
     return c == FailureClass::Timeout || c == FailureClass::Preempted || c == FailureClass::NodeFailure ||

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/io/h5.h"
+#include "core/atomic_file.h"
 
 namespace beverloo::job_files {
 

@@ -20,7 +20,6 @@ inline constexpr const char* kLock = "lock";
 inline constexpr const char* kOutcome = "outcome.json";
 inline constexpr const char* kLog = "log";
 inline constexpr const char* kHeartbeat = "heartbeat.json";
-inline constexpr int kLockBusyExit = 75;  ///< a worker found its job locked by another live worker
 
 struct Outcome {
   std::string token;

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/failures.h"
 #include "executor.h"
 #include "job_files.h"
 
@@ -31,7 +32,7 @@ void LocalExecutor::start(const std::vector<ClaimedJob>& jobs) {
     if (pid == 0) {
       // child: lock the job (inherited across exec), log to the job directory, become the worker
       const int fd = ::open(lock.c_str(), O_CREAT | O_RDWR, 0644);
-      if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) _exit(job_files::kLockBusyExit);
+      if (fd < 0 || ::flock(fd, LOCK_EX | LOCK_NB) != 0) _exit(exit_code::kLockBusy);
       const int logfd = ::open(log.c_str(), O_CREAT | O_WRONLY | O_APPEND, 0644);
       if (logfd >= 0) {
         ::dup2(logfd, STDOUT_FILENO);

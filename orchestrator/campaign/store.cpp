@@ -1,4 +1,5 @@
 #include "store.h"
+#include "core/digest.h"
 
 #include "engine/parameters.h"
 
@@ -9,45 +10,6 @@
 #include <random>
 
 namespace beverloo {
-
-const char* to_string(FailureClass c) {
-  switch (c) {
-    case FailureClass::InvalidParameters: return "invalid_parameters";
-    case FailureClass::BlowUp: return "blow_up";
-    case FailureClass::Killed: return "killed";
-    case FailureClass::Timeout: return "timeout";
-    case FailureClass::Io: return "io";
-    case FailureClass::Interrupted: return "interrupted";
-    case FailureClass::Lost: return "lost";
-    case FailureClass::Internal: return "internal";
-    case FailureClass::Cancelled: return "cancelled";
-    case FailureClass::Preempted: return "preempted";
-    case FailureClass::NodeFailure: return "node_failure";
-    case FailureClass::OutOfMemory: return "out_of_memory";
-    case FailureClass::Stalled: return "stalled";
-  }
-  return "internal";
-}
-
-bool is_infrastructure(FailureClass c) {
-  return c == FailureClass::Killed || c == FailureClass::Lost || c == FailureClass::Interrupted ||
-         c == FailureClass::Timeout || c == FailureClass::Preempted || c == FailureClass::NodeFailure ||
-         c == FailureClass::Stalled;
-}
-
-namespace {
-const char* attempt_state(FailureClass c) {
-  switch (c) {
-    case FailureClass::Interrupted:
-    case FailureClass::Preempted: return "interrupted";
-    case FailureClass::Lost:
-    case FailureClass::NodeFailure:
-    case FailureClass::Stalled: return "lost";
-    case FailureClass::Cancelled: return "cancelled";
-    default: return "failed";
-  }
-}
-}  // namespace
 
 std::string new_token() {
   std::ifstream urandom("/dev/urandom", std::ios::binary);
@@ -239,8 +201,8 @@ std::string CampaignStore::record_failure(std::int64_t attempt_id, const std::st
   db::Transaction tx(db_);
   db_.prepare("UPDATE attempts SET state = ?1, failure_class = ?2, exit_status = ?3, message = ?4, "
               "ended_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE id = ?5")
-      .bind(1, attempt_state(cls))
-      .bind(2, to_string(cls))
+      .bind(1, std::string(failure_info(cls).attempt_state))
+      .bind(2, std::string(to_string(cls)))
       .bind(3, exit_status)
       .bind(4, message)
       .bind(5, attempt_id)
@@ -256,12 +218,12 @@ std::string CampaignStore::record_failure(std::int64_t attempt_id, const std::st
       tx.commit();
       return state;  // a result or a cancel arrived meanwhile: nothing to undo
     }
-    if (cls == FailureClass::Cancelled)
-      state = "cancelled";  // a user cancelled it in the scheduler: not retried
-    else if (cls == FailureClass::InvalidParameters || (!is_infrastructure(cls) && used >= max_retries))
-      state = "failed";
-    else
-      state = "pending";
+    switch (failure_info(cls).retry) {  // the one retry policy (core/failures.h)
+      case RetryPolicy::Cancel: state = "cancelled"; break;  // a user cancelled it in the scheduler
+      case RetryPolicy::Never: state = "failed"; break;
+      case RetryPolicy::Budgeted: state = used >= max_retries ? "failed" : "pending"; break;
+      case RetryPolicy::Free: state = "pending"; break;
+    }
     st.reset();
     db_.prepare("UPDATE jobs SET state = ?1, retries_used = retries_used + ?2 WHERE key = ?3")
         .bind(1, state)

@@ -7,22 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "core/failures.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/sweep/sweep.h"
 
 namespace beverloo {
 
 /// Why an attempt failed; decides whether the job is retried and whether that costs a retry.
-enum class FailureClass {
-  InvalidParameters, BlowUp, Killed, Timeout, Io, Interrupted, Lost, Internal,
-  // what Slurm can end an attempt with (slurm_output.h has the table)
-  Cancelled, Preempted, NodeFailure, OutOfMemory, Stalled
-};
-const char* to_string(FailureClass c);
-/// Infrastructure failures (killed, lost, interrupted, timeout, preempted, node failure, stalled)
-/// resume from the checkpoint without using up the job's retry budget.
-bool is_infrastructure(FailureClass c);
-
 struct ClaimedJob {
   std::string key, dir, job_json, token;
   std::int64_t attempt_id = 0;

@@ -15,8 +15,8 @@
 #include "engine/io/h5.h"
 #include "engine/protocol/hopper_run.h"
 #include "job_files.h"
-#include "orchestrator/cli/exit_codes.h"
-#include "orchestrator/cli/signals.h"
+#include "core/failures.h"
+#include "core/stop_signal.h"
 #include "store.h"
 
 namespace beverloo {
@@ -88,9 +88,11 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
   job_files::Outcome out;
   out.token = spec.at("token");
   out.attempt_no = spec.at("attempt_no");
-  auto finish = [&](int code, const char* cls, const std::string& message) {
+  // success, or a failure class: its exit code and name come from the one table (core/failures.h)
+  auto finish = [&](std::optional<FailureClass> failure, const std::string& message) {
+    const int code = failure ? failure_info(*failure).exit_code : exit_code::kOk;
     out.exit_code = code;
-    out.failure_class = cls;
+    out.failure_class = failure ? std::string(to_string(*failure)) : "";
     out.message = message;
     try {
       job_files::write_outcome(dir, out);
@@ -105,7 +107,7 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
   try {
     c = SimConfig::from_json(spec.at("job"));
   } catch (const ConfigError& e) {
-    return finish(exit_code::kConfig, "invalid_parameters", e.what());
+    return finish(FailureClass::InvalidParameters, e.what());
   }
   std::atomic<std::int64_t> step{0};
   HeartbeatWriter heartbeat(dir, out.token, spec.value("heartbeat_s", 30.0), step);
@@ -115,7 +117,7 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
     if (fs::exists(result) && fs::exists(fs::path(dir) / "summary.json")) {
       H5Handle f = h5::open_file(result.string());
       H5Handle p = h5::open_group(f, "parameters");
-      if (h5::attr_string(p, "job_json") == c.to_json().dump()) return finish(exit_code::kOk, "", "");
+      if (h5::attr_string(p, "job_json") == c.to_json().dump()) return finish(std::nullopt, "");
     }
     RunOptions opt;
     opt.output_dir = dir;
@@ -124,16 +126,16 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
     opt.stop_request = stop;
     opt.progress_step = &step;
     const RunResult r = run_hopper(c, opt);
-    if (r.status == "interrupted") return finish(exit_code::kInterrupted, "interrupted", r.stop_reason);
-    return finish(exit_code::kOk, "", "");
+    if (r.status == "interrupted") return finish(FailureClass::Interrupted, r.stop_reason);
+    return finish(std::nullopt, "");
   } catch (const ConfigError& e) {
-    return finish(exit_code::kConfig, "invalid_parameters", e.what());
+    return finish(FailureClass::InvalidParameters, e.what());
   } catch (const InstabilityError& e) {
-    return finish(exit_code::kUnstable, "blow_up", e.what());
+    return finish(FailureClass::BlowUp, e.what());
   } catch (const IoError& e) {
-    return finish(exit_code::kIo, "io", e.what());
+    return finish(FailureClass::Io, e.what());
   } catch (const std::exception& e) {
-    return finish(exit_code::kInternal, "internal", e.what());
+    return finish(FailureClass::Internal, e.what());
   }
 }
 
@@ -245,7 +247,7 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
     {
       LogRedirect log(dir);
       if (stop->load()) {
-        job_files::write_outcome(dir, {token, spec.at("attempt_no"), exit_code::kInterrupted, "interrupted",
+        job_files::write_outcome(dir, {token, spec.at("attempt_no"), exit_code::kInterrupted, std::string(to_string(FailureClass::Interrupted)),
                                        "not started: the array task was stopped before it"});
         code = exit_code::kInterrupted;
       } else {

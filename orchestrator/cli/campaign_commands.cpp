@@ -10,7 +10,7 @@
 
 #include "commands.h"
 #include "engine/io/h5.h"
-#include "exit_codes.h"
+#include "core/failures.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/campaign/worker.h"

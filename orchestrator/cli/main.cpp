@@ -3,7 +3,7 @@
 
 #include "commands.h"
 #include "engine/io/h5.h"
-#include "exit_codes.h"
+#include "core/failures.h"
 
 int main(int argc, char** argv) {
   beverloo::h5::silence_errors();

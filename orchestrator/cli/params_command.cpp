@@ -7,7 +7,7 @@
 
 #include "commands.h"
 #include "engine/parameters.h"
-#include "exit_codes.h"
+#include "core/failures.h"
 #include "orchestrator/sweep/sweep_schema.h"
 
 namespace beverloo {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "exit_codes.h"
+#include "core/failures.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/db/migrations.h"
 

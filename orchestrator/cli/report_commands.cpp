@@ -6,7 +6,7 @@
 
 #include "commands.h"
 #include "engine/io/h5.h"
-#include "exit_codes.h"
+#include "core/failures.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/db/migrations.h"
 #include "reports/campaign_fits.h"

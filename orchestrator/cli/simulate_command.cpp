@@ -4,12 +4,13 @@
 #include <fstream>
 #include <iostream>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "engine/integrate/time_step.h"
 #include "engine/io/h5.h"
 #include "engine/protocol/hopper_run.h"
-#include "exit_codes.h"
-#include "signals.h"
+#include "core/failures.h"
+#include "core/stop_signal.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -98,12 +99,15 @@ int run_simulate(const SimulateArgs& a) {
                                           : ProgressMode::Auto;
   opt.checkpoint_wall_seconds = a.checkpoint_wall_seconds;
   opt.stop_request = install_stop_handlers();
-  auto record_failure = [&](const char* cls, const std::string& message) {
+  // failure.json for people; the class and the exit code come from the one table
+  auto fail = [&](FailureClass cls, const char* what, const std::string& message) {
+    std::fprintf(stderr, "\nbeverloo simulate: %s: %s\n", what, message.c_str());
     try {
-      nlohmann::json j = {{"status", "failed"}, {"failure_class", cls}, {"message", message}};
+      nlohmann::json j = {{"status", "failed"}, {"failure_class", std::string(to_string(cls))}, {"message", message}};
       write_text_atomically((fs::path(dir) / "failure.json").string(), j.dump(2) + "\n");
     } catch (...) {
     }
+    return failure_info(cls).exit_code;
   };
   try {
     const RunResult r = run_hopper(c, opt);
@@ -118,15 +122,11 @@ int run_simulate(const SimulateArgs& a) {
     return exit_code::kOk;
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
-    return exit_code::kConfig;
+    return failure_info(FailureClass::InvalidParameters).exit_code;
   } catch (const InstabilityError& e) {
-    std::fprintf(stderr, "\nbeverloo simulate: unstable run: %s\n", e.what());
-    record_failure("blow_up", e.what());
-    return exit_code::kUnstable;
+    return fail(FailureClass::BlowUp, "unstable run", e.what());
   } catch (const IoError& e) {
-    std::fprintf(stderr, "\nbeverloo simulate: I/O error: %s\n", e.what());
-    record_failure("io", e.what());
-    return exit_code::kIo;
+    return fail(FailureClass::Io, "I/O error", e.what());
   }
 }
 

@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "engine/integrate/time_step.h"
-#include "engine/io/h5.h"
+#include "core/atomic_file.h"
 #include "orchestrator/campaign/job_files.h"
 
 namespace beverloo {
@@ -336,7 +336,7 @@ std::vector<WorkerExit> SlurmExecutor::poll() {
     // A result or a science failure is final. "interrupted" is not: a requeued task (scontrol
     // requeue, preemption with requeue) passes through ended-looking states and runs the same
     // attempt again, so it gets the grace period, as does a task that ended without files (NFS lag).
-    const bool final_outcome = ours && outcome->failure_class != "interrupted";
+    const bool final_outcome = ours && outcome->failure_class != to_string(FailureClass::Interrupted);
     if (known) {
       if (final_outcome || waited >= options_.result_grace_s) {
         out.push_back(ended(t, t.state, rec->exit_code, true));

@@ -2,9 +2,9 @@
 #include "sweep.h"
 
 #include "engine/integrate/time_step.h"
+#include "core/digest.h"
 #include "engine/parameters.h"
 
-#include <openssl/evp.h>
 
 #include <cmath>
 #include <filesystem>
@@ -209,19 +209,6 @@ void set_field(json& job, const std::string& name, const json& value) {
 }
 
 }  // namespace
-
-std::string sha256_hex(const std::string& bytes) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int len = 0;
-  EVP_Digest(bytes.data(), bytes.size(), digest, &len, EVP_sha256(), nullptr);
-  static const char* hex = "0123456789abcdef";
-  std::string out;
-  for (unsigned i = 0; i < len; ++i) {
-    out += hex[digest[i] >> 4];
-    out += hex[digest[i] & 15];
-  }
-  return out;
-}
 
 std::string job_key(const SimConfig& c) {
   // without the settings that cannot change a finished run's result (checkpoint cadence,

@@ -64,6 +64,5 @@ struct Sweep {
 /// The job key: sha256 of the canonical job (without settings that cannot change the result:
 /// checkpoint cadence, trajectory output) and the engine version.
 std::string job_key(const SimConfig& c);
-std::string sha256_hex(const std::string& bytes);
 
 }  // namespace beverloo

@@ -1,4 +1,4 @@
-#include "signals.h"
+#include "stop_signal.h"
 
 #include <csignal>
 

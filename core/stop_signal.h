@@ -1,5 +1,5 @@
 #pragma once
-/// \file signals.h
+/// \file stop_signal.h
 /// \brief SIGINT, SIGTERM and SIGUSR1 ask a running simulation to checkpoint and stop.
 #include <atomic>
 

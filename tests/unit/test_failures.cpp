@@ -1,0 +1,41 @@
+// The one failure table (core/failures.h): every class has its own name, its exit code maps
+// back to it, and the retry policy is the one the store applies.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "core/failures.h"
+
+namespace beverloo {
+namespace {
+
+TEST(FailureTable, EveryClassHasOneNameAndItsExitCodeMapsBack) {
+  std::set<std::string> names;
+  for (int i = 0; i <= static_cast<int>(FailureClass::Stalled); ++i) {
+    const auto c = static_cast<FailureClass>(i);
+    const FailureInfo& f = failure_info(c);
+    EXPECT_EQ(f.cls, c);
+    EXPECT_TRUE(names.insert(std::string(f.name)).second) << f.name;
+    EXPECT_EQ(failure_from_name(f.name), c);
+    if (f.exit_code >= 0) EXPECT_EQ(failure_from_exit(false, f.exit_code), c) << f.name;
+  }
+  EXPECT_EQ(failure_from_exit(true, 0), FailureClass::Killed);
+  EXPECT_EQ(failure_from_exit(false, 99), FailureClass::Internal);
+  EXPECT_FALSE(failure_from_name("nonsense").has_value());
+}
+
+TEST(FailureTable, SciencePaysFromTheBudgetInfrastructureDoesNot) {
+  EXPECT_EQ(failure_info(FailureClass::InvalidParameters).retry, RetryPolicy::Never);
+  EXPECT_EQ(failure_info(FailureClass::BlowUp).retry, RetryPolicy::Budgeted);
+  EXPECT_EQ(failure_info(FailureClass::Io).retry, RetryPolicy::Budgeted);
+  for (FailureClass c : {FailureClass::Killed, FailureClass::Lost, FailureClass::Interrupted, FailureClass::Timeout,
+                         FailureClass::Preempted, FailureClass::NodeFailure, FailureClass::Stalled})
+    EXPECT_TRUE(is_infrastructure(c)) << to_string(c);
+  EXPECT_EQ(failure_info(FailureClass::Cancelled).retry, RetryPolicy::Cancel);
+  EXPECT_EQ(failure_info(FailureClass::Interrupted).exit_code, exit_code::kInterrupted);
+  EXPECT_EQ(failure_info(FailureClass::Lost).exit_code, exit_code::kLockBusy);
+}
+
+}  // namespace
+}  // namespace beverloo

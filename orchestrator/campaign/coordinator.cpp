@@ -17,7 +17,7 @@
 #include <sstream>
 #include <thread>
 
-#include "engine/io/h5.h"
+#include "engine/io/job_output.h"
 #include "executor.h"
 #include "orchestrator/slurm/slurm_executor.h"
 #include "job_files.h"
@@ -54,16 +54,6 @@ CoordinatorLock::~CoordinatorLock() {
 }
 
 namespace {
-
-struct Profile {
-  std::vector<double> h, v_g, v_g_err;
-};
-
-Profile read_profile(const std::string& job_dir) {
-  H5Handle f = h5::open_file((fs::path(job_dir) / "result.h5").string());
-  H5Handle g = h5::open_group(f, "profile");
-  return {h5::read_doubles(g, "h"), h5::read_doubles(g, "v_g"), h5::read_doubles(g, "v_g_err")};
-}
 
 std::string last_log_line(const std::string& job_dir) {
   std::ifstream in(fs::path(job_dir) / job_files::kLog);
@@ -135,17 +125,27 @@ class Coordinator {
     const std::string dir = job_dir(job.dir);
     const auto outcome = job_files::read_outcome(dir);
     const bool ours = outcome && outcome->token == job.token;
+    std::string damaged;
     if (ours && outcome->exit_code == exit_code::kOk) {
-      const Profile p = read_profile(dir);
-      store_.ingest_success(job, job_files::read_text((fs::path(dir) / "summary.json").string()), p.h, p.v_g, p.v_g_err);
-      log_event(job, "done", "");
-      return;
+      try {  // the engine says whether its files are complete and intact
+        const job_output::CompletedRun r =
+            job_output::read_completed(dir, SimConfig::from_json(nlohmann::json::parse(job.job_json)));
+        store_.ingest_success(job, r.summary_json, r.h, r.v_g, r.v_g_err);
+        log_event(job, "done", "");
+        return;
+      } catch (const std::exception& e) {
+        damaged = e.what();  // a success whose files are damaged or missing: an I/O failure, retried
+      }
     }
     FailureClass cls = FailureClass::Lost;
     int status = -1;
     std::string message = "worker gone without an outcome (killed, or the coordinator died before it started)";
     const std::optional<FailureClass> verdict = exit ? exit->verdict : std::nullopt;
-    if (ours) {
+    if (!damaged.empty()) {
+      cls = FailureClass::Io;
+      status = outcome->exit_code;
+      message = "the worker reported success but its result is unusable: " + damaged;
+    } else if (ours) {
       cls = class_of(outcome->failure_class);
       status = outcome->exit_code;
       message = outcome->message;

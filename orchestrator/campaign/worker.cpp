@@ -12,7 +12,7 @@
 #include <mutex>
 #include <thread>
 
-#include "engine/io/h5.h"
+#include "engine/io/job_output.h"
 #include "engine/protocol/hopper_run.h"
 #include "job_files.h"
 #include "core/failures.h"
@@ -113,11 +113,12 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
   HeartbeatWriter heartbeat(dir, out.token, spec.value("heartbeat_s", 30.0), step);
   try {
     // A previous attempt may have finished the run and died before writing its outcome.
-    const fs::path result = fs::path(dir) / "result.h5";
-    if (fs::exists(result) && fs::exists(fs::path(dir) / "summary.json")) {
-      H5Handle f = h5::open_file(result.string());
-      H5Handle p = h5::open_group(f, "parameters");
-      if (h5::attr_string(p, "job_json") == c.to_json().dump()) return finish(std::nullopt, "");
+    const job_output::ResultCheck done = job_output::check_result(dir, c);
+    if (done.state == job_output::ResultState::Complete) return finish(std::nullopt, "");
+    if (done.state != job_output::ResultState::None) {
+      // damaged, or another job's: run it again (from the checkpoint if there is one)
+      std::fprintf(stderr, "beverloo worker: %s; running the job again\n", done.reason.c_str());
+      job_output::remove_result(dir);
     }
     RunOptions opt;
     opt.output_dir = dir;

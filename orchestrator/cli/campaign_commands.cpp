@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "commands.h"
-#include "engine/io/h5.h"
+#include "core/errors.h"
 #include "core/failures.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/campaign/store.h"

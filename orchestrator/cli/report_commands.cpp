@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
-#include "engine/io/h5.h"
+#include "core/errors.h"
 #include "core/failures.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/db/migrations.h"

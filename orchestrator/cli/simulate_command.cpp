@@ -7,7 +7,7 @@
 #include "core/atomic_file.h"
 #include "commands.h"
 #include "engine/integrate/time_step.h"
-#include "engine/io/h5.h"
+#include "engine/io/job_output.h"
 #include "engine/protocol/hopper_run.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
@@ -61,7 +61,7 @@ int run_simulate(const SimulateArgs& a) {
     return exit_code::kConfig;
   }
   const std::string dir = a.out_dir.empty() ? (fs::path("out") / fs::path(a.job_path).stem()).string() : a.out_dir;
-  const fs::path result = fs::path(dir) / "result.h5", checkpoint = fs::path(dir) / "checkpoint.h5";
+  const fs::path result = fs::path(dir) / job_output::kResult, checkpoint = fs::path(dir) / job_output::kCheckpoint;
   try {
     if (!a.resume && (fs::exists(result) || fs::exists(checkpoint))) {
       if (!a.overwrite) {
@@ -70,18 +70,24 @@ int run_simulate(const SimulateArgs& a) {
                      dir.c_str());
         return exit_code::kConfig;
       }
-      for (const char* name : {"result.h5", "checkpoint.h5", "summary.json", "failure.json", "trajectory.h5"})
+      for (const char* name : {job_output::kResult, job_output::kCheckpoint, job_output::kSummary, job_output::kFailure,
+                               job_output::kTrajectory})
         fs::remove(fs::path(dir) / name);
     }
-    if (a.resume && fs::exists(result)) {
-      H5Handle f = h5::open_file(result.string());
-      H5Handle p = h5::open_group(f, "parameters");
-      if (h5::attr_string(p, "job_json") != c.to_json().dump()) {
-        std::fprintf(stderr, "beverloo simulate: %s holds the result of a different job\n", dir.c_str());
+    if (a.resume) {
+      const job_output::ResultCheck done = job_output::check_result(dir, c);
+      if (done.state == job_output::ResultState::OtherJob) {
+        std::fprintf(stderr, "beverloo simulate: %s\n", done.reason.c_str());
         return exit_code::kConfig;
       }
-      std::fprintf(stderr, "beverloo simulate: %s is already complete\n", dir.c_str());
-      return exit_code::kOk;
+      if (done.state == job_output::ResultState::Complete) {
+        std::fprintf(stderr, "beverloo simulate: %s is already complete\n", dir.c_str());
+        return exit_code::kOk;
+      }
+      if (done.state == job_output::ResultState::Damaged) {
+        std::fprintf(stderr, "beverloo simulate: %s; running the job again\n", done.reason.c_str());
+        job_output::remove_result(dir);
+      }
     }
     fs::create_directories(dir);
     write_text_atomically((fs::path(dir) / "job.json").string(), c.to_json().dump(2) + "\n");

@@ -35,6 +35,24 @@ int Series::clogged_points() const {
   return n;
 }
 
+namespace {
+/// Sorts a crossover group's finite-lambda series and fits the sigmoid to their beta.
+void fit_group(Crossover& g) {
+  std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
+  std::vector<double> l, b, e;
+  for (const Series* s : g.finite) {
+    l.push_back(s->lambda);
+    b.push_back(s->fit->beta);
+    e.push_back(s->fit->beta_err);
+  }
+  try {
+    g.fit = fit_crossover(g.dimension, l, b, e);
+  } catch (const FitError& err) {
+    g.message = err.what();
+  }
+}
+}  // namespace
+
 CampaignFits fit_campaign(db::Database& db) {
   CampaignFits out;
   db::Statement st = db.prepare(
@@ -160,18 +178,7 @@ CampaignFits fit_campaign(db::Database& db) {
       if (s.zeta == 0 && s.base_key == gkey.substr(0, gkey.find('|')) &&
           std::fabs(s.mu / (10 * std::sqrt(10.0)) - scale) <= 1e-9 * scale)
         g.limit0 = &s;
-    std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
-    std::vector<double> l, b, e;
-    for (const Series* s : g.finite) {
-      l.push_back(s->lambda);
-      b.push_back(s->fit->beta);
-      e.push_back(s->fit->beta_err);
-    }
-    try {
-      g.fit = fit_crossover(g.dimension, l, b, e);
-    } catch (const FitError& err) {
-      g.message = err.what();
-    }
+    fit_group(g);
     out.crossovers.push_back(g);
   }
   // The authors' lambda axis (docs/authors-model.md): drag as a rate times the mass, varied at a
@@ -200,18 +207,7 @@ CampaignFits fit_campaign(db::Database& db) {
         g.limit0 = &s;
       if (s.mu == 0 && s.drag_rate > 0 && !g.limit_inf) g.limit_inf = &s;
     }
-    std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
-    std::vector<double> l, b, e;
-    for (const Series* s : g.finite) {
-      l.push_back(s->lambda);
-      b.push_back(s->fit->beta);
-      e.push_back(s->fit->beta_err);
-    }
-    try {
-      g.fit = fit_crossover(g.dimension, l, b, e);
-    } catch (const FitError& err) {
-      g.message = err.what();
-    }
+    fit_group(g);
     out.crossovers.push_back(g);
   }
   return out;

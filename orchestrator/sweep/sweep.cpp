@@ -6,6 +6,7 @@
 #include "engine/parameters.h"
 
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -178,6 +179,25 @@ double as_number(const Tagged& t, const std::string& name) {
   throw SweepError(t.path, show(t.value) + ": " + name + " must be a number here");
 }
 
+/// The names an expression uses (identifiers, whole words: E_w does not use w).
+std::set<std::string> identifiers(const std::string& expr) {
+  std::set<std::string> out;
+  for (std::size_t i = 0; i < expr.size();) {
+    const unsigned char ch = static_cast<unsigned char>(expr[i]);
+    if (std::isalpha(ch) || ch == '_') {
+      std::size_t k = i;
+      while (k < expr.size() && (std::isalnum(static_cast<unsigned char>(expr[k])) || expr[k] == '_')) ++k;
+      out.insert(expr.substr(i, k - i));
+      i = k;
+    } else if (std::isdigit(ch) || ch == '.') {  // a number, with its exponent (1e3 is not "e3")
+      while (i < expr.size() && (std::isalnum(static_cast<unsigned char>(expr[i])) || expr[i] == '.')) ++i;
+    } else {
+      ++i;
+    }
+  }
+  return out;
+}
+
 /// Evaluates an expression with the point's numeric parameters as variables.
 double evaluate(const std::string& expr, const Point& point, const std::string& path) {
   mu::Parser parser;
@@ -306,9 +326,11 @@ std::vector<JobSpec> Sweep::expand() const {
       bool progress = false;
       for (auto it = pending.begin(); it != pending.end();) {
         const std::string expr = j["derived"][*it].get<std::string>();
+        const std::set<std::string> uses = identifiers(expr);
+        if (uses.count(*it)) throw SweepError("derived." + *it, "\"" + expr + "\": refers to itself");
         bool ready = true;
         for (const auto& other : pending)
-          if (other != *it && expr.find(other) != std::string::npos) ready = false;
+          if (other != *it && uses.count(other)) ready = false;
         if (!ready) {
           ++it;
           continue;
@@ -323,7 +345,12 @@ std::vector<JobSpec> Sweep::expand() const {
     bool keep = true;
     if (j.contains("where"))
       for (std::size_t k = 0; k < j["where"].size() && keep; ++k)
-        keep = evaluate(j["where"][k].get<std::string>(), p, "where[" + std::to_string(k) + "]") != 0;
+      {
+        const std::string path = "where[" + std::to_string(k) + "]";
+        const double v = evaluate(j["where"][k].get<std::string>(), p, path);
+        if (std::isnan(v)) throw SweepError(path, "\"" + j["where"][k].get<std::string>() + "\": is NaN for a point (not a yes or no)");
+        keep = v != 0;
+      }
     if (!keep) continue;
 
     JobSpec spec;
@@ -386,6 +413,8 @@ std::vector<JobSpec> Sweep::expand() const {
     if (!seen.insert(spec.key).second) continue;  // the same job twice in one sweep runs once
     jobs.push_back(std::move(spec));
   }
+  if (jobs.empty())
+    throw SweepError(j.contains("where") ? "where" : "sweep", "the sweep makes no jobs (every point is filtered out)");
   return jobs;
 }
 

@@ -101,6 +101,29 @@ TEST(Sweep, DerivedParametersAndWhereFilters) {
                                {"sweep", {{"zeta", {0.5}}}},
                                {"derived", {{"mu", "E_sp / 100 * zeta"}, {"E_sp", "200"}}}});
   EXPECT_DOUBLE_EQ(chained[0].config.mu, 1.0);
+  // whole names: E_w = 100 w is not a cycle with w = E_w / 1e3 ... only where a name is used
+  const auto words = expand({{"base", {{"N", 50}, {"W", 12}, {"zeta", 0.1}, {"mu", 0.0}}},
+                             {"sweep", {{"E_sp", {100}}}},
+                             {"derived", {{"w", "E_sp / 25"}, {"E_w", "1e3 * E_sp"}}}});
+  EXPECT_DOUBLE_EQ(words[0].config.w, 4.0);
+  EXPECT_DOUBLE_EQ(words[0].config.E_w, 1e5);
+}
+
+TEST(Sweep, SelfReferenceNanFiltersAndEmptySweepsAreErrors) {
+  auto error_of = [](const json& j) -> std::string {
+    try {
+      (void)Sweep::parse(j, "t").expand();
+    } catch (const SweepError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  const json base = {{"N", 50}, {"W", 12}, {"w", 4}, {"zeta", 0.1}, {"mu", 0.0}};
+  EXPECT_NE(error_of({{"base", base}, {"sweep", {{"E_sp", {100}}}}, {"derived", {{"E_w", "2 * E_w"}}}}).find("refers to itself"),
+            std::string::npos);
+  EXPECT_NE(error_of({{"base", base}, {"sweep", {{"E_sp", {100}}}}, {"where", {"sqrt(-E_sp)"}}}).find("NaN"), std::string::npos);
+  EXPECT_NE(error_of({{"base", base}, {"sweep", {{"E_sp", {100}}}}, {"where", {"E_sp > 1e9"}}}).find("no jobs"),
+            std::string::npos);
 }
 
 TEST(Sweep, ReplicasGiveDistinctSeedsAndKeys) {

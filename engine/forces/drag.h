@@ -30,6 +30,14 @@ class Drag final : public ForceTerm<D> {
     if (!on_ || (c_[0] == 0 && c_[1] == 0)) return {};
     double power = 0;
     const int n = s.size();
+    if (c_[0] == c_[1]) {  // one coefficient (zeta alone): no per-particle lookup in this loop
+      const double c = c_[0];
+      for (int i = 0; i < n; ++i) {
+        f[i] -= c * s.v[i];
+        power -= c * s.v[i].squaredNorm();
+      }
+      return {0, power};
+    }
     for (int i = 0; i < n; ++i) {
       const double c = c_[s.species[i]];
       f[i] -= c * s.v[i];

@@ -202,6 +202,7 @@ class Coordinator {
       job.dir = a.dir;
       job.token = a.token;
       job.attempt_id = a.attempt_id;
+      job.job_json = a.job_json;
       if (ex_.adopt(a))
         live_[a.attempt_id] = {job, Clock::now()};
       else

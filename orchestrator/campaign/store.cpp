@@ -239,10 +239,11 @@ std::vector<RunningAttempt> CampaignStore::running_attempts() {
   std::vector<RunningAttempt> out;
   db::Statement st = db_.prepare(
       "SELECT a.id, a.job_key, j.dir, a.token, a.executor, coalesce(a.pid, -1), coalesce(a.slurm_submission, -1), "
-      "coalesce(a.slurm_array_task, -1) FROM attempts a JOIN jobs j ON j.key = a.job_key WHERE a.state = 'running' ORDER BY a.id");
+      "coalesce(a.slurm_array_task, -1), j.job_json FROM attempts a JOIN jobs j ON j.key = a.job_key "
+      "WHERE a.state = 'running' ORDER BY a.id");
   while (st.step())
     out.push_back({st.get_int(0), st.get_text(1), st.get_text(2), st.get_text(3), st.get_text(4), st.get_int(5), st.get_int(6),
-                   static_cast<int>(st.get_int(7))});
+                   static_cast<int>(st.get_int(7)), st.get_text(8)});
   return out;
 }
 

@@ -27,6 +27,7 @@ struct RunningAttempt {
   // Slurm attempts: their submission (-1: claimed but never handed to sbatch) and array index
   std::int64_t submission = -1;
   int array_task = -1;
+  std::string job_json;  ///< the canonical job (its result is checked against it)
 };
 
 /// One sbatch call, as recorded before and after it ran.

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "engine/integrate/time_step.h"
 #include "engine/io/job_output.h"
+#include "engine/json_file.h"
 #include "engine/protocol/hopper_run.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
@@ -26,17 +27,7 @@ struct SimulateArgs {
   std::string progress = "auto";
 };
 
-SimConfig read_job(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path, "cannot read the job file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ConfigError(path, std::string("is not valid JSON: ") + e.what());
-  }
-  return SimConfig::from_json(j);
-}
+SimConfig read_job(const std::string& path) { return SimConfig::from_json(read_json_file(path)); }
 
 void print_summary(const RunResult& r, const SimConfig& c) {
   std::printf("status        %s (%s)\n", r.status.c_str(), r.stop_reason.c_str());

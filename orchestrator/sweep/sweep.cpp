@@ -3,6 +3,7 @@
 
 #include "engine/integrate/time_step.h"
 #include "core/digest.h"
+#include "engine/json_file.h"
 #include "engine/parameters.h"
 
 
@@ -237,17 +238,13 @@ std::string job_key(const SimConfig& c) {
 }
 
 Sweep Sweep::load(const std::string& path, std::string* text) {
-  std::ifstream in(path);
-  if (!in) throw SweepError(path, "cannot read the sweep file");
-  std::stringstream ss;
-  ss << in.rdbuf();
   json j;
   try {
-    j = json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    throw SweepError(path, std::string("is not valid JSON: ") + e.what());
+    j = read_json_file(path, text);  // limits: engine/json_file.h
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    throw SweepError(path, what.substr(e.field().size() + 2));
   }
-  if (text) *text = ss.str();
   return parse(j, std::filesystem::path(path).stem().string());
 }
 

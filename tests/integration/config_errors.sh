@@ -20,6 +20,17 @@ check dt_too_big  "dt: 0.002 is unstable for E_sp" '{"w": 6, "zeta": 0.3, "mu": 
 check bad_json    "is not valid JSON"       '{"w": 6, '
 check angle       "theta_w_left_deg"        '{"w": 6, "zeta": 0.3, "mu": 0, "theta_w_deg": 120}'
 check model       "model"                   '{"w": 6, "zeta": 0.3, "mu": 0, "model": "lj"}'
+check overflow    "a number does not fit a double" '{"w": 1e400, "zeta": 0.3, "mu": 0}'
+check explicit_N0 "N: must be in"       '{"w": 6, "zeta": 0.3, "mu": 0, "N": 0}'
+check wrapped_int "N: must be in"       '{"w": 6, "zeta": 0.3, "mu": 0, "N": 4294967336}'
+check deep        "nests deeper than 64"   "$(python3 -c "print('['*10000 + ']'*10000)")"
+# limits before memory or time is spent: no hang on a FIFO, no read of a device
+mkfifo "$WORK/fifo"
+set +e; timeout 10 "$BIN" simulate "$WORK/fifo" -o "$WORK/x" 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "not a regular file" "$WORK/err" || fail "a FIFO as the job file: rc $rc, $(cat "$WORK/err")"
+set +e; timeout 10 "$BIN" sweep check /dev/zero 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "not a regular file" "$WORK/err" || fail "/dev/zero as the sweep file: rc $rc, $(cat "$WORK/err")"
+echo "ok  FIFO and device refused at once"
 # an existing run is not silently overwritten
 echo '{"w": 6, "zeta": 0.3, "mu": 0, "N": 100, "W": 12, "run": {"t_max": 2, "min_window": 1, "rate_bin": 0.1, "min_transient": 0}}' > "$WORK/ok.json"
 "$BIN" simulate "$WORK/ok.json" -o "$WORK/ok" --progress quiet > /dev/null

@@ -31,6 +31,17 @@ Hopper<D> hopper_for(const SimConfig& c) {
 }
 
 /// N particles placed at random (dense: overlaps remain unless minimised).
+/// A small (0) and a large (1) particle of c's mixture, at rest, positions to be set.
+template <int D>
+ParticleState<D> small_and_large(const SimConfig& c) {
+  ParticleState<D> s;
+  s.sp = Species::bidisperse(D, c.size_ratio);
+  s.resize(2);
+  s.species = {0, 1};
+  for (int k = 0; k < 2; ++k) s.inv_mass[k] = 1 / s.mass(k);
+  return s;
+}
+
 template <int D>
 ParticleState<D> random_state(const SimConfig& c, const Hopper<D>& h, std::uint64_t seed) {
   ParticleState<D> s;

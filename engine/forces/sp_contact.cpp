@@ -38,8 +38,7 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
       Vec<D> fij = (-dU_dr / r) * dx;  // on i, along x_i - x_j (repulsive)
       if constexpr (kFriction != Friction::None) {
         if (rubs(i, j)) {
-          const Vec<D> ff = kFriction == Friction::Full ? kinetic_friction_force<D>(law_.mu_t, s.v[i], s.v[j])
-                                                        : kinetic_friction_force<D>(law_, s.v[i], s.v[j], Vec<D>(dx / r));
+          const Vec<D> ff = friction_on<kFriction == Friction::Split>(s, i, j, dx, r);
           power += ff.dot(s.v[i] - s.v[j]);
           fij += ff;
         }
@@ -69,7 +68,8 @@ void SpContact<D>::friction_forces(const ParticleState<D>& s, VecArray<D>& out) 
       const double sig = 0.5 * (s.sigma(i) + s.sigma(j));
       const Vec<D> dx = s.x[i] - s.x[j];
       if (dx.squaredNorm() >= sig * sig || !rubs(i, j)) continue;
-      const Vec<D> ff = friction_on(s, i, j, dx, dx.norm());
+      const double r = dx.norm();
+      const Vec<D> ff = law_.split() ? friction_on<true>(s, i, j, dx, r) : friction_on<false>(s, i, j, dx, r);
       out[i] += ff;
       out[j] -= ff;
     }

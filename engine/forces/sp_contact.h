@@ -38,10 +38,11 @@ class SpContact final : public ForceTerm<D> {
   enum class Friction { None, Full, Split };
   template <Friction kFriction>
   TermOutput loop(const ParticleState<D>& s, VecArray<D>& f);
-  /// The friction force on i from j (dx = x_i - x_j, r = |dx|).
+  /// The friction force on i from j (dx = x_i - x_j, r = |dx|); kSplit: the split law.
+  template <bool kSplit>
   Vec<D> friction_on(const ParticleState<D>& s, int i, int j, const Vec<D>& dx, double r) const {
-    if (!law_.split()) return kinetic_friction_force<D>(law_.mu_t, s.v[i], s.v[j]);
-    return kinetic_friction_force<D>(law_, s.v[i], s.v[j], Vec<D>(dx / r));
+    if constexpr (kSplit) return kinetic_friction_force<D>(law_, s.v[i], s.v[j], Vec<D>(dx / r));
+    return kinetic_friction_force<D>(law_.mu_t, s.v[i], s.v[j]);
   }
 
   const NeighborList<D>& list_;

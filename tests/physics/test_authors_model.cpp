@@ -211,12 +211,8 @@ Collision collide(double E_sp, double mu, std::optional<double> mu_n, std::optio
   c.mu_t = mu_t;
   c.resolve_and_validate();
   const Hopper<D> h = hopper_for<D>(c);
-  ParticleState<D> s;
-  s.sp = Species::bidisperse(D, c.size_ratio);
-  s.resize(2);
-  s.species = {0, 1};
+  ParticleState<D> s = testing::small_and_large<D>(c);
   const double m0 = s.sp.mass[0], m1 = s.sp.mass[1], reach = 0.5 * (s.sp.sigma[0] + s.sp.sigma[1]);
-  for (int k = 0; k < 2; ++k) s.inv_mass[k] = 1 / s.mass(k);
   Vec<D> up = Vec<D>::Zero(), along = Vec<D>::Zero(), side = Vec<D>::Zero();
   up[kUp<D>] = 20;
   along[0] = 1;
@@ -281,11 +277,7 @@ void check_same_terminal_time(double zeta, double rate, bool expect_same) {
   c.drag_rate = rate;
   c.resolve_and_validate();
   const Hopper<D> h = hopper_for<D>(c);
-  ParticleState<D> s;
-  s.sp = Species::bidisperse(D, c.size_ratio);
-  s.resize(2);
-  s.species = {0, 1};
-  for (int k = 0; k < 2; ++k) s.inv_mass[k] = 1 / s.mass(k);
+  ParticleState<D> s = testing::small_and_large<D>(c);
   Vec<D> a = Vec<D>::Zero(), b = Vec<D>::Zero();
   a[kUp<D>] = 20;
   b[kUp<D>] = 20;

@@ -111,12 +111,8 @@ void check_head_on_restitution(double E_sp, double mu) {
   c.E_sp = E_sp;
   c.resolve_and_validate();
   const Hopper<D> h = hopper_for<D>(c);
-  ParticleState<D> s;
-  s.sp = Species::bidisperse(D, c.size_ratio);
-  s.resize(2);
-  s.species = {0, 1};
+  ParticleState<D> s = testing::small_and_large<D>(c);
   const double m0 = s.sp.mass[0], m1 = s.sp.mass[1], reach = 0.5 * (s.sp.sigma[0] + s.sp.sigma[1]);
-  for (int k = 0; k < 2; ++k) s.inv_mass[k] = 1 / s.mass(k);
   Vec<D> up = Vec<D>::Zero(), along = Vec<D>::Zero();
   up[kUp<D>] = 20;
   along[0] = 1;

@@ -223,6 +223,8 @@ void SimConfig::resolve_and_validate() {
   if (dimension == 3)
     require(theta_w_left_deg == 90 && theta_w_right_deg == 90, "theta_w_deg",
             "the 3D hopper has a flat base only (90 degrees), got " + num(theta_w_left_deg));
+  if (reinjection.rule == "lanes")
+    require(dimension == 2, "reinjection.rule", "\"lanes\" is the authors' 2D rule; 3D jobs use \"pile\"");
   require(run.rate_bin <= run.min_window / 8, "run.rate_bin", "must be at most run.min_window / 8 (block averaging needs bins)");
   require(observables.block_length >= observables.sample_interval, "observables.block_length",
           "must be >= observables.sample_interval");

@@ -50,6 +50,9 @@ struct ReinjectionParams {
   double drop_depth_diameters = 2.0;  ///< reinject once this many own diameters below the orifice
   double top_band = 3.0;              ///< candidates to touch: within this of the highest pile particle
   int max_attempts = 500;             ///< random placements tried before the fallback
+  /// "pile": touch a topmost pile particle (physics.md 6.4, the text); "lanes": the authors'
+  /// code's rule, dropped above the top of one of a set of fixed vertical lanes (reinjector.h)
+  std::string rule = "pile";
 };
 
 /// Observables of physics.md section 7.

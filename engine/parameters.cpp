@@ -182,6 +182,10 @@ std::vector<ParamSpec> build_table() {
       {.path = "reinjection.max_attempts", .type = T::Integer, .unit = "-", .default_text = "500",
        .doc = "random placements tried before the fallback", .access = INT(reinjection.max_attempts), .lo = 1,
        .sweepable = false},
+      {.path = "reinjection.rule", .type = T::Text, .unit = "-", .default_text = "\"pile\"",
+       .doc = "\"pile\": touching a topmost pile particle, with its velocity (the text); \"lanes\": above the top of one of fixed lanes 2 small diameters apart, in turn, with the lane's velocity and a sideways kick (the authors' code; 2D)",
+       .access = TEXT(reinjection.rule), .omit_at_default = true, .sql_column = "reinjection_rule",
+       .sql_default = "'pile'", .allowed = "pile,lanes"},
       // --- observables -------------------------------------------------------------------
       {.path = "observables.sample_interval", .type = T::Real, .unit = "t0", .default_text = "0.1",
        .doc = "time between samples of profile, density and forces", .access = REAL(observables.sample_interval),

@@ -168,13 +168,17 @@ double HopperRun<D>::set_ceiling() {
 template <int D>
 void HopperRun<D>::reinject_exited(NeighborList<D>& list) {
   list.update(s_, hopper_);  // a list valid for these positions: a canonical pile
-  pile_finder_.find(s_, list, hopper_, in_pile_);
+  const bool lanes = c_.reinjection.rule == "lanes";  // the authors' rule needs no pile
+  if (!lanes) pile_finder_.find(s_, list, hopper_, in_pile_);
   for (int i : exits_.to_reinject()) {
     ++rec_.reinjections;
-    const bool touched = reinjector_.reinject(s_, i, rng_, in_pile_);
-    if (!touched) ++rec_.reinjection_fallbacks;
+    // the lane counter is the number of earlier reinjections: no extra checkpointed state
+    const bool placed_as_ruled =
+        lanes ? reinjector_.reinject_in_lane(s_, i, rec_.reinjections - 1, body_drag_[s_.species[i]] / s_.mass(i))
+              : reinjector_.reinject(s_, i, rng_, in_pile_);
+    if (!placed_as_ruled) ++rec_.reinjection_fallbacks;
     list.relocate(i, s_, hopper_);
-    in_pile_[i] = touched;  // resting on the pile; a fallback particle is still in the air
+    if (!lanes) in_pile_[i] = placed_as_ruled;  // resting on the pile; a fallback particle is in the air
     if constexpr (D == 2) {
       if (dp_) dp_->reinject(i, s_.x[i], s_.v[i], rng_.uniform(0, 2 * units::pi));
     }

@@ -91,6 +91,69 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
   }
 }
 
+// The constants of the authors' rule, in small diameters sigma_s (their code's length unit:
+// YUXUANCHENG/DPM_OMP, commit 1258ab0, src/NVE.h, DPMhopperSimulator::addBack, getMaxHight,
+// getVatMaxHeight; docs/authors-model.md section 3).
+namespace lanes {
+constexpr double kSpacing = 2.0;        // lateral distance between lanes ("* 2" in displace)
+constexpr int kSafeZone = 2;            // lanes left out near the walls ("safeZone = 2")
+constexpr double kHalfWindow = 1.5;     // a particle belongs to a lane within this ("y +- 1.5")
+constexpr double kDropHeight = 1.0;     // centre this far above the lane's top ("maxHight - 1")
+constexpr double kFreeFallHeight = 1.5; // speed reduced by free fall over this ("2*g*1.5/16")
+// "b < 5e-3" in code units; the code's time unit is t0/19.596 (authors-model.md section 1)
+constexpr double kFreeFallBelowRate = 5e-3 * 19.596;  // 1/t0
+constexpr double kSideways = 0.1;       // sideways speed over downward speed ("0.1*v")
+}  // namespace lanes
+
+template <int D>
+int Reinjector<D>::lanes(const ParticleState<D>& s) const {
+  const double small = s.sp.sigma[0];
+  const int n = static_cast<int>(std::floor(2 * hopper_.half_width() / (lanes::kSpacing * small))) - lanes::kSafeZone;
+  return std::max(n, 1);
+}
+
+template <int D>
+bool Reinjector<D>::reinject_in_lane(ParticleState<D>& s, int i, std::int64_t placement, double drag_rate) {
+  const double small = s.sp.sigma[0];
+  const int k_lane = static_cast<int>(placement % lanes(s));
+  // 0, -1, +1, -2, +2, ... lane spacings from the axis (the code's round((k + 1e-4) / 2) * (-1)^k)
+  const double offset = std::round((k_lane + 1e-4) / 2.0) * (k_lane % 2 ? -1.0 : 1.0) * lanes::kSpacing * small;
+  const int n = s.size();
+  auto in_lane = [&](int k) {
+    return k != i && !s.exited[k] && std::fabs(s.x[k][0] - offset) < lanes::kHalfWindow * small;
+  };
+  int highest = -1;
+  for (int k = 0; k < n; ++k)
+    if (in_lane(k) && (highest < 0 || s.x[k][kUp<D>] > s.x[highest][kUp<D>])) highest = k;
+  const double lane_top =
+      highest >= 0 ? s.x[highest][kUp<D>] + 0.5 * s.sigma(highest) : hopper_.funnel_top();
+  Vec<D> p = Vec<D>::Zero();
+  p[0] = offset;
+  p[kUp<D>] = lane_top + lanes::kDropHeight * small;
+  // the code places without a check; a soft spot taken by a wall or a stretched polygon is
+  // not ours to overlap (a stiff contact would blow up), so lift in half-diameter steps
+  const double ri = 0.5 * s.sigma(i);
+  bool lifted = false;
+  while (!is_free(s, i, p, -1)) {
+    p[kUp<D>] += ri;
+    lifted = true;
+  }
+  // the velocity: the nearest particle below the new one in its lane
+  int below = -1;
+  for (int k = 0; k < n; ++k)
+    if (in_lane(k) && s.x[k][kUp<D>] < p[kUp<D>] && (below < 0 || s.x[k][kUp<D>] > s.x[below][kUp<D>])) below = k;
+  const double v_down = below >= 0 ? -s.v[below][kUp<D>] : 0.0;
+  double v_new = v_down;
+  const double fall = 2 * lanes::kFreeFallHeight * small;  // 2 g h with g = 1
+  if (drag_rate < lanes::kFreeFallBelowRate && v_down * v_down - fall > 0) v_new = std::sqrt(v_down * v_down - fall);
+  s.x[i] = p;
+  s.v[i] = Vec<D>::Zero();
+  s.v[i][kUp<D>] = -v_new;
+  s.v[i][0] = lanes::kSideways * v_down * (i % 2 ? -1.0 : 1.0);
+  s.exited[i] = 0;
+  return !lifted;
+}
+
 template class Reinjector<2>;
 template class Reinjector<3>;
 

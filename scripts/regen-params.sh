@@ -1,0 +1,33 @@
+#!/bin/sh
+# Rewrites the two generated copies of the parameter table after a row of
+# engine/parameters.cpp changed: the $defs of schema/sweep.schema.json and the block of
+# docs/job-file.md between its parameters:begin / parameters:end markers.
+# Usage: scripts/regen-params.sh [BEVERLOO]   (default: build/orchestrator/beverloo)
+# tests/orchestrator/test_parameters.cpp fails until both match the table.
+set -eu
+cd "$(dirname "$0")/.."
+bin=${1:-build/orchestrator/beverloo}
+"$bin" params --format schema-defs > /tmp/beverloo-defs.$$
+"$bin" params --format markdown > /tmp/beverloo-md.$$
+python3 - /tmp/beverloo-defs.$$ /tmp/beverloo-md.$$ <<'PY'
+import json, re, sys
+defs = json.load(open(sys.argv[1]))
+schema_path = "schema/sweep.schema.json"
+schema = json.load(open(schema_path))
+schema.setdefault("$defs", {}).update(defs)
+tmp = schema_path + ".tmp"
+with open(tmp, "w") as f:
+    json.dump(schema, f, indent=2)
+    f.write("\n")
+import os; os.replace(tmp, schema_path)
+md_path = "docs/job-file.md"
+md = open(md_path).read()
+block = open(sys.argv[2]).read()
+pat = re.compile(r"(<!-- parameters:begin[^>]*-->\n).*?(<!-- parameters:end -->)", re.S)
+if not pat.search(md):
+    sys.exit(md_path + ": parameters:begin/end markers not found")
+md = pat.sub(lambda m: m.group(1) + block + m.group(2), md)
+open(md_path + ".tmp", "w").write(md); os.replace(md_path + ".tmp", md_path)
+PY
+rm -f /tmp/beverloo-defs.$$ /tmp/beverloo-md.$$
+echo "regenerated schema/sweep.schema.json \$defs and docs/job-file.md parameter block"

@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "orchestrator/sweep/sweep.h"
+#include "series_labels.h"
 
 namespace beverloo {
 namespace {
@@ -61,6 +62,8 @@ CampaignFits fit_campaign(db::Database& db) {
       "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
   std::map<std::string, std::size_t> index;
   std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool>>>> raw;
+  std::vector<json> series_jobs;               // per series, for labels that tell them apart
+  std::map<std::string, json> base_job_of;     // series key -> its job without zeta and mu
   while (st.step()) {
     json job = json::parse(st.get_text(1));
     const double w = job["w"].get<double>();
@@ -103,6 +106,8 @@ CampaignFits fit_campaign(db::Database& db) {
       base.erase("mu_n");  // a friction split belongs to the friction: limits match on mu and mu_n
       base.erase("mu_t");
       s.base_key = sha256_hex(base.dump());
+      base_job_of[key] = base;
+      series_jobs.push_back(series_job);
       std::ostringstream label;
       label << s.dimension << "D " << s.stiffness << " lambda=" << format_lambda(s.lambda) << " (zeta="
             << fmt(s.zeta, 3);
@@ -119,6 +124,12 @@ CampaignFits fit_campaign(db::Database& db) {
     }
     out.series[index[key]].job_keys.push_back(st.get_text(0));
     raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0);
+  }
+  {
+    std::vector<std::string> labels;
+    for (const Series& s : out.series) labels.push_back(s.label);
+    disambiguate_labels(labels, series_jobs);
+    for (std::size_t i = 0; i < labels.size(); ++i) out.series[i].label = labels[i];
   }
   for (Series& s : out.series) {
     for (const auto& [w, reps] : raw[s.key]) {
@@ -210,6 +221,16 @@ CampaignFits fit_campaign(db::Database& db) {
     fit_group(g);
     out.crossovers.push_back(g);
   }
+  // groups that differ in something other than their label's fields say so, as series do
+  std::vector<std::string> labels;
+  std::vector<json> bases;
+  for (const Crossover& g : out.crossovers) {
+    const Series* any = !g.finite.empty() ? g.finite.front() : g.limit0 ? g.limit0 : g.limit_inf;
+    labels.push_back(g.label);
+    bases.push_back(any ? base_job_of[any->key] : json::object());
+  }
+  disambiguate_labels(labels, bases);
+  for (std::size_t i = 0; i < labels.size(); ++i) out.crossovers[i].label = labels[i];
   return out;
 }
 

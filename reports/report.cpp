@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
-#include "orchestrator/campaign/coordinator.h"
-#include "orchestrator/db/migrations.h"
+#include "core/errors.h"
+#include "orchestrator/campaign/campaign_dir.h"
 #include "reports/campaign_fits.h"
 
 namespace beverloo {
@@ -85,11 +85,11 @@ ReportFigure finish(Figure& f, int blocks, const fs::path& dir, const std::strin
 }  // namespace
 
 std::vector<ReportFigure> write_report(const std::string& campaign_dir, const std::string& out_dir) {
+  // the fits are written into the database: one writer
+  CampaignWriter writer(campaign_dir, CampaignWriter::Open::MustExist);
+  db::Database& db = writer.db();
   const fs::path dir(out_dir);
   fs::create_directories(dir);
-  CoordinatorLock lock(campaign_dir);  // the fits are written into the database: one writer
-  db::Database db((fs::path(campaign_dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-  db::open_store(db);
   const CampaignFits fits = fit_campaign(db);
   store_fits(db, fits);
   write_fit_tables(fits, out_dir);

@@ -30,29 +30,6 @@ namespace beverloo {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-CoordinatorLock::CoordinatorLock(const std::string& dir) {
-  const std::string path = (fs::path(dir) / "coordinator.lock").string();
-  fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);  // CLOEXEC: workers must not inherit it
-  if (fd_ < 0) throw IoError("cannot open " + path);
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    std::ifstream in(path);
-    std::string holder;
-    std::getline(in, holder);
-    ::close(fd_);
-    fd_ = -1;
-    throw CampaignBusy("another coordinator is running this campaign (" + holder + "); wait for it or stop it");
-  }
-  // a dead holder's lock is gone with its process: we own it now; say who we are
-  std::ostringstream me;
-  me << "host " << host_name() << ", pid " << ::getpid() << ", since " << std::time(nullptr);
-  const std::string text = me.str() + "\n";
-  if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, text.data(), text.size(), 0) < 0) { /* informational only */ }
-}
-
-CoordinatorLock::~CoordinatorLock() {
-  if (fd_ >= 0) ::close(fd_);
-}
-
 namespace {
 
 std::string last_log_line(const std::string& job_dir) {
@@ -286,10 +263,9 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
     sweep = Sweep::load(*sweep_path, &text);
     jobs = sweep->expand();
   }
-  fs::create_directories(fs::path(o.dir) / "jobs");
-  CoordinatorLock lock(o.dir);
-  db::Database db((fs::path(o.dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-  db::open_store(db);
+  // without a sweep there is nothing to create: a missing campaign is an error, not a new directory
+  CampaignWriter writer(o.dir, sweep ? CampaignWriter::Open::CreateIfMissing : CampaignWriter::Open::MustExist);
+  db::Database& db = writer.db();
   CampaignStore store(db);
   const std::int64_t campaign = sweep ? store.create_campaign(*sweep, text, jobs) : store.latest_campaign();
   if (campaign < 0) throw SweepError(o.dir, "holds no campaign; give a sweep file");

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "campaign_dir.h"
 #include "engine/protocol/hopper_run.h"
 #include "orchestrator/slurm/slurm_options.h"
 
@@ -27,21 +28,5 @@ struct CampaignOptions {
 /// `beverloo run`: creates or reopens the campaign of sweep_path (if given) and runs every job
 /// that is not done. Returns an exit code.
 int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOptions& o);
-
-/// The campaign lock: one coordinator per campaign directory (flock on coordinator.lock; the
-/// holder's host, pid and start time are written into it). Throws if another one lives.
-class CoordinatorLock {
- public:
-  explicit CoordinatorLock(const std::string& dir);
-  ~CoordinatorLock();
-
- private:
-  int fd_ = -1;
-};
-
-class CampaignBusy : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 }  // namespace beverloo

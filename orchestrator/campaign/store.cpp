@@ -1,4 +1,6 @@
 #include "store.h"
+
+#include "campaign_dir.h"
 #include "core/digest.h"
 
 #include "engine/parameters.h"
@@ -65,7 +67,7 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
     std::optional<double> scale;
     if (const double ds = derived::dissipation_scale(c); ds > 0) scale = ds;
     insert_job.bind(1, j.key)
-        .bind(2, "jobs/" + j.key.substr(0, 16))
+        .bind(2, campaign_dir::job_dir_relative(j.key))
         .bind(3, j.job.dump())
         .bind(4, BEVERLOO_VERSION)
         .bind(5, c.model)

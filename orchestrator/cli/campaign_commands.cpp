@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "core/errors.h"
 #include "core/failures.h"
+#include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/campaign/worker.h"
@@ -35,6 +36,9 @@ int guarded(const char* cmd, F&& body) {
     std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
     return exit_code::kConfig;
   } catch (const ConfigError& e) {
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    return exit_code::kConfig;
+  } catch (const MissingCampaign& e) {
     std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
     return exit_code::kConfig;
   } catch (const CampaignBusy& e) {
@@ -96,8 +100,8 @@ int expand_command(const std::string& path, const std::string& format) {
 }
 
 int status_command(const std::string& dir) {
-  db::Database db((fs::path(dir) / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
-  db::check_store(db);
+  CampaignReader reader(dir);
+  db::Database& db = reader.db();
   CampaignStore store(db);
   const std::int64_t id = store.latest_campaign();
   if (id < 0) throw SweepError(dir, "holds no campaign");
@@ -146,11 +150,8 @@ int status_command(const std::string& dir) {
 
 template <class F>
 int with_store(const std::string& dir, F&& body) {
-  if (!fs::exists(fs::path(dir) / "campaign.sqlite")) throw SweepError(dir, "holds no campaign");
-  CoordinatorLock lock(dir);  // the database has one writer at a time
-  db::Database db((fs::path(dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
+  CampaignWriter writer(dir, CampaignWriter::Open::MustExist);  // one writer at a time
+  CampaignStore store(writer.db());
   const std::int64_t id = store.latest_campaign();
   if (id < 0) throw SweepError(dir, "holds no campaign");
   return body(store, id);
@@ -216,7 +217,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
       o.progress = to_mode(*progress);
       const int rc = run_campaign(*sweep_path, o);
       if (rc != exit_code::kOk && rc != exit_code::kJobsFailed) return rc;
-      const int report = report_campaign(o.dir, (fs::path(o.dir) / "report").string());
+      const int report = report_campaign(o.dir, campaign_dir::report_path(o.dir));
       return rc != exit_code::kOk ? rc : report;
     });
   });
@@ -253,11 +254,8 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
       std::vector<JobSpec> jobs;
       std::string text;
       const Sweep s = load_sweep(*create_path, &jobs, &text);
-      fs::create_directories(fs::path(*dir) / "jobs");
-      CoordinatorLock lock(*dir);
-      db::Database db((fs::path(*dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-      db::open_store(db);
-      CampaignStore(db).create_campaign(s, text, jobs);
+      CampaignWriter writer(*dir, CampaignWriter::Open::CreateIfMissing);
+      CampaignStore(writer.db()).create_campaign(s, text, jobs);
       std::printf("campaign \"%s\" with %zu jobs in %s\n", s.name.c_str(), jobs.size(), dir->c_str());
       return exit_code::kOk;
     });

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "core/failures.h"
+#include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/db/migrations.h"
 
@@ -51,14 +52,9 @@ std::string csv_quote(const std::string& s) {
 }
 
 int run_query(const std::string& dir, const std::string& sql, const std::string& format) {
-  const std::string path = (std::filesystem::path(dir) / "campaign.sqlite").string();
-  if (!std::filesystem::exists(path)) {
-    std::fprintf(stderr, "beverloo query: %s has no campaign.sqlite\n", dir.c_str());
-    return exit_code::kConfig;
-  }
   try {
-    db::Database db(path, db::Database::Mode::ReadOnly);
-    db::check_store(db);
+    CampaignReader reader(dir);
+    db::Database& db = reader.db();
     db.exec("PRAGMA query_only = 1");
     sqlite3_set_authorizer(db.handle(), authorize, nullptr);
     // Prepare every statement first: one refused statement means nothing runs at all.
@@ -134,6 +130,9 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
       }
     }
     return exit_code::kOk;
+  } catch (const MissingCampaign& e) {
+    std::fprintf(stderr, "beverloo query: %s\n", e.what());
+    return exit_code::kConfig;
   } catch (const db::DbError& e) {
     std::fprintf(stderr, "beverloo query: %s\n", e.what());
     return e.code() == SQLITE_AUTH ? exit_code::kConfig : exit_code::kIo;

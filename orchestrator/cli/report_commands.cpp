@@ -7,8 +7,7 @@
 #include "commands.h"
 #include "core/errors.h"
 #include "core/failures.h"
-#include "orchestrator/campaign/coordinator.h"
-#include "orchestrator/db/migrations.h"
+#include "orchestrator/campaign/campaign_dir.h"
 #include "reports/campaign_fits.h"
 #include "reports/report.h"
 
@@ -17,16 +16,15 @@ namespace fs = std::filesystem;
 
 int report_campaign(const std::string& dir, const std::string& out) {
   try {
-    if (!fs::exists(fs::path(dir) / "campaign.sqlite")) {
-      std::fprintf(stderr, "beverloo report: %s holds no campaign\n", dir.c_str());
-      return exit_code::kConfig;
-    }
     const auto figures = write_report(dir, out);
     int made = 0;
     for (const auto& f : figures) made += f.made;
     std::printf("report: %s/index.html (%d of %zu figures; tables beverloo_fits and crossover_fits)\n", out.c_str(), made,
                 figures.size());
     return exit_code::kOk;
+  } catch (const MissingCampaign& e) {
+    std::fprintf(stderr, "beverloo report: %s\n", e.what());
+    return exit_code::kConfig;
   } catch (const CampaignBusy& e) {
     std::fprintf(stderr, "beverloo report: %s\n", e.what());
     return exit_code::kBusy;
@@ -42,18 +40,20 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   fit->add_option("DIR", *dir, "campaign directory")->required();
   fit->callback([dir, &exit_status] {
     try {
-      CoordinatorLock lock(*dir);
-      db::Database db((fs::path(*dir) / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-      db::open_store(db);
+      CampaignWriter writer(*dir, CampaignWriter::Open::MustExist);
+      db::Database& db = writer.db();
       const CampaignFits fits = fit_campaign(db);
       store_fits(db, fits);
-      const std::string out = (fs::path(*dir) / "report").string();
+      const std::string out = campaign_dir::report_path(*dir);
       write_fit_tables(fits, out);
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits) and %s/*.csv, *.md\n",
                   dir->c_str(), out.c_str());
       exit_status = exit_code::kOk;
+    } catch (const MissingCampaign& e) {
+      std::fprintf(stderr, "beverloo fit: %s\n", e.what());
+      exit_status = exit_code::kConfig;
     } catch (const CampaignBusy& e) {
       std::fprintf(stderr, "beverloo fit: %s\n", e.what());
       exit_status = exit_code::kBusy;
@@ -68,7 +68,7 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   report->add_option("DIR", *rdir, "campaign directory")->required();
   report->add_option("-o,--output", *out, "output directory (default: DIR/report)");
   report->callback([rdir, out, &exit_status] {
-    exit_status = report_campaign(*rdir, out->empty() ? (fs::path(*rdir) / "report").string() : *out);
+    exit_status = report_campaign(*rdir, out->empty() ? campaign_dir::report_path(*rdir) : *out);
   });
 }
 

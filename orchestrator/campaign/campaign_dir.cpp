@@ -1,0 +1,80 @@
+#include "campaign_dir.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.h"
+#include "orchestrator/db/migrations.h"
+#include "store.h"  // host_name
+
+namespace beverloo {
+namespace fs = std::filesystem;
+
+namespace campaign_dir {
+std::string database_path(const std::string& dir) { return (fs::path(dir) / kDatabaseFile).string(); }
+std::string report_path(const std::string& dir) { return (fs::path(dir) / kReportDir).string(); }
+std::string job_dir_relative(const std::string& job_key) { return std::string(kJobsDir) + "/" + job_key.substr(0, 16); }
+bool holds_campaign(const std::string& dir) {
+  std::error_code ec;
+  return fs::is_regular_file(database_path(dir), ec);
+}
+}  // namespace campaign_dir
+
+MissingCampaign::MissingCampaign(const std::string& dir)
+    : std::runtime_error(dir + " holds no campaign (no " + campaign_dir::kDatabaseFile +
+                         "); create one with `beverloo run SWEEP --dir " + dir + "`") {}
+
+CoordinatorLock::CoordinatorLock(const std::string& dir) {
+  const std::string path = (fs::path(dir) / campaign_dir::kLockFile).string();
+  fd_ = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);  // CLOEXEC: workers must not inherit it
+  if (fd_ < 0) throw IoError("cannot open " + path);
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    std::ifstream in(path);
+    std::string holder;
+    std::getline(in, holder);
+    ::close(fd_);
+    fd_ = -1;
+    throw CampaignBusy("another coordinator is running this campaign (" + holder + "); wait for it or stop it");
+  }
+  // a dead holder's lock is gone with its process: we own it now; say who we are
+  std::ostringstream me;
+  me << "host " << host_name() << ", pid " << ::getpid() << ", since " << std::time(nullptr);
+  const std::string text = me.str() + "\n";
+  if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, text.data(), text.size(), 0) < 0) { /* informational only */ }
+}
+
+CoordinatorLock::~CoordinatorLock() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+CampaignWriter::Prepared::Prepared(const std::string& dir, Open how) {
+  if (how == Open::CreateIfMissing) {
+    std::error_code ec;
+    fs::create_directories(fs::path(dir) / campaign_dir::kJobsDir, ec);
+    if (ec) throw IoError("cannot create " + (fs::path(dir) / campaign_dir::kJobsDir).string() + ": " + ec.message());
+  } else if (!campaign_dir::holds_campaign(dir)) {
+    throw MissingCampaign(dir);
+  }
+}
+
+CampaignWriter::CampaignWriter(const std::string& dir, Open how)
+    : prepared_(dir, how), lock_(dir), db_(campaign_dir::database_path(dir), db::Database::Mode::ReadWrite) {
+  db::open_store(db_);
+}
+
+CampaignReader::Prepared::Prepared(const std::string& dir) {
+  if (!campaign_dir::holds_campaign(dir)) throw MissingCampaign(dir);
+}
+
+CampaignReader::CampaignReader(const std::string& dir)
+    : prepared_(dir), db_(campaign_dir::database_path(dir), db::Database::Mode::ReadOnly) {
+  db::check_store(db_);
+}
+
+}  // namespace beverloo

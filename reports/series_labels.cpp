@@ -57,8 +57,10 @@ void disambiguate_labels(std::vector<std::string>& labels, const std::vector<jso
     std::vector<json> flat;
     std::set<std::string> paths;
     for (std::size_t i : members) {
-      flat.push_back(jobs[i].flatten());
-      for (const auto& [p, v] : flat.back().items()) paths.insert(p);
+      json f = jobs[i].flatten();
+      for (auto it = f.begin(); it != f.end();) it = it->is_null() ? f.erase(it) : std::next(it);  // empty groups
+      for (const auto& [p, v] : f.items()) paths.insert(p);
+      flat.push_back(std::move(f));
     }
     std::vector<std::string> differing;
     for (const std::string& p : paths) {

@@ -18,8 +18,7 @@
 #include <thread>
 
 #include "engine/io/job_output.h"
-#include "executor.h"
-#include "orchestrator/slurm/slurm_executor.h"
+#include "orchestrator/executors/executor_factory.h"
 #include "job_files.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
@@ -197,9 +196,7 @@ class Coordinator {
   }
 
   int shutdown() {
-    std::fprintf(stderr, "\n[beverloo] stopping: %s\n",
-                 ex_.name() == "local" ? "workers checkpoint and stop"
-                                       : "Slurm tasks keep running; run the same command again to collect them");
+    std::fprintf(stderr, "\n[beverloo] stopping: %s\n", ex_.on_stop().c_str());
     for (const WorkerExit& e : ex_.stop_all()) finished(e);
     return exit_code::kInterrupted;
   }
@@ -274,11 +271,9 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
   sigemptyset(&chld);
   sigaddset(&chld, SIGCHLD);
   sigprocmask(SIG_BLOCK, &chld, nullptr);
-  std::unique_ptr<Executor> ex;
-  if (o.executor == "slurm")
-    ex = std::make_unique<SlurmExecutor>(store, fs::absolute(o.dir).lexically_normal().string(), o.slurm);
-  else
-    ex = std::make_unique<LocalExecutor>(store, o.dir, o.workers, o.heartbeat_s);
+  const std::unique_ptr<Executor> ex =
+      make_executor(o.executor, store, ExecutorSettings{.campaign_dir = o.dir, .workers = o.workers,
+                                                        .heartbeat_s = o.heartbeat_s, .slurm = o.slurm});
   Coordinator c(db, campaign, o, *ex);
   return c.run(stop);
 }

@@ -13,6 +13,7 @@
 #include "core/failures.h"
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/campaign/coordinator.h"
+#include "orchestrator/executors/executor_factory.h"
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
@@ -170,7 +171,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   auto add_executor_options = [opts](CLI::App* cmd) {
     SlurmOptions& s = opts->slurm;
     cmd->add_option("--executor", opts->executor, "local (worker processes here) | slurm (job arrays)")
-        ->check(CLI::IsMember({"local", "slurm"}));
+        ->check(CLI::IsMember(executor_names()));
     cmd->add_option("--partition", s.partition, "slurm: partition (default: the cluster's default)");
     cmd->add_option("--time-limit", s.time_limit, "slurm: --time per array task, e.g. 4:00:00 (default: the partition's)");
     cmd->add_option("--max-array", s.max_array, "slurm: tasks per array (default: MaxArraySize - 1, at most 1000)")

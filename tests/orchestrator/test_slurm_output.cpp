@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "orchestrator/slurm/slurm_executor.h"
+#include "orchestrator/executors/slurm_executor.h"
 #include "orchestrator/slurm/slurm_output.h"
 
 namespace beverloo::slurm {

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "orchestrator/campaign/executor.h"
-#include "slurm_commands.h"
-#include "slurm_options.h"
-#include "slurm_output.h"
+#include "executor.h"
+#include "orchestrator/slurm/slurm_commands.h"
+#include "orchestrator/slurm/slurm_options.h"
+#include "orchestrator/slurm/slurm_output.h"
 
 namespace beverloo {
 
@@ -23,6 +23,9 @@ class SlurmExecutor final : public Executor {
   SlurmExecutor(CampaignStore& store, std::string campaign_dir, SlurmOptions options);
   ~SlurmExecutor() override;
   std::string name() const override { return "slurm"; }
+  std::string on_stop() const override {
+    return "Slurm tasks keep running; run the same command again to collect them";
+  }
   int free_slots() const override { return options_.max_in_flight - static_cast<int>(tracked_.size()); }
   int in_flight() const override { return static_cast<int>(tracked_.size()); }
   void start(const std::vector<ClaimedJob>& jobs) override;

@@ -11,8 +11,8 @@
 #include <filesystem>
 
 #include "core/failures.h"
-#include "executor.h"
-#include "job_files.h"
+#include "local_executor.h"
+#include "orchestrator/campaign/job_files.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;

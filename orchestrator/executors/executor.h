@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "store.h"
+#include "orchestrator/campaign/store.h"
 
 namespace beverloo {
 
@@ -29,6 +29,8 @@ class Executor {
  public:
   virtual ~Executor() = default;
   virtual std::string name() const = 0;
+  /// What stop_all() does to running work, for the coordinator's message when it stops.
+  virtual std::string on_stop() const = 0;
   /// How many more attempts may be started now.
   virtual int free_slots() const = 0;
   /// Attempts started or adopted and not yet reported ended.
@@ -48,38 +50,6 @@ class Executor {
   /// Asks one worker to checkpoint and stop (--job-timeout); executors whose scheduler enforces
   /// time limits itself ignore it.
   virtual void stop(std::int64_t attempt_id) = 0;
-};
-
-/// Worker processes on this machine: fork + exec of this binary's `worker` subcommand. The
-/// child takes the job's flock before exec, so the lock exists exactly as long as the worker.
-class LocalExecutor final : public Executor {
- public:
-  static constexpr int kStopGraceSeconds = 30;  ///< SIGTERM, then SIGKILL after this
-  LocalExecutor(CampaignStore& store, std::string campaign_dir, int workers, double heartbeat_s)
-      : store_(store), dir_(std::move(campaign_dir)), capacity_(workers), heartbeat_s_(heartbeat_s) {}
-  std::string name() const override { return "local"; }
-  int free_slots() const override { return capacity_ - static_cast<int>(children_.size()); }
-  int in_flight() const override { return static_cast<int>(children_.size() + adopted_.size()); }
-  void start(const std::vector<ClaimedJob>& jobs) override;
-  bool adopt(const RunningAttempt& a) override;
-  std::vector<WorkerExit> poll() override;
-  void wait() override;
-  std::vector<WorkerExit> stop_all() override;
-  void stop(std::int64_t attempt_id) override;
-
- private:
-  struct Child {
-    std::int64_t pid, attempt_id;
-    std::string dir;
-  };
-  std::vector<WorkerExit> reap();
-  CampaignStore& store_;
-  std::string dir_;
-  int capacity_;
-  double heartbeat_s_;
-  std::vector<Child> children_;
-  std::vector<Child> adopted_;  ///< workers of an earlier coordinator: watched through their locks
-  double last_heartbeat_ = 0;
 };
 
 }  // namespace beverloo

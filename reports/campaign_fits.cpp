@@ -30,6 +30,21 @@ std::string fmt(double v, int digits = 4) {
 
 std::string format_lambda(double lambda) { return std::isinf(lambda) ? "inf" : fmt(lambda); }
 
+std::string fit_quality(const Series& s) {
+  if (!s.fit) return "no fit";
+  const double rel = s.fit->beta_err / std::fabs(s.fit->beta);
+  if (!(rel <= kBetaDeterminedRelErr)) {
+    char b[96];
+    std::snprintf(b, sizeof b, "not determined: beta's error is %.0f %%", 100 * rel);
+    return b;
+  }
+  double w_min = INFINITY;
+  for (const auto& p : s.points)
+    if (p.flowing()) w_min = std::min(w_min, p.w);
+  if (s.fit->k < 0 || s.fit->k >= w_min) return "not determined: k outside [0, smallest w]";
+  return "ok";
+}
+
 int Series::clogged_points() const {
   int n = 0;
   for (const auto& p : points) n += !p.flowing() && p.clogged > 0;
@@ -57,11 +72,11 @@ void fit_group(Crossover& g) {
 CampaignFits fit_campaign(db::Database& db) {
   CampaignFits out;
   db::Statement st = db.prepare(
-      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged FROM jobs j "
+      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status FROM jobs j "
       "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
       "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
   std::map<std::string, std::size_t> index;
-  std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool>>>> raw;
+  std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool, bool>>>> raw;
   std::vector<json> series_jobs;               // per series, for labels that tell them apart
   std::map<std::string, json> base_job_of;     // series key -> its job without zeta and mu
   while (st.step()) {
@@ -123,7 +138,7 @@ CampaignFits fit_campaign(db::Database& db) {
       out.series.push_back(s);
     }
     out.series[index[key]].job_keys.push_back(st.get_text(0));
-    raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0);
+    raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0, st.get_text(5) == "time_limit");
   }
   {
     std::vector<std::string> labels;
@@ -137,7 +152,8 @@ CampaignFits fit_campaign(db::Database& db) {
       p.w = w;
       p.replicas = static_cast<int>(reps.size());
       double sw = 0, swq = 0;
-      for (const auto& [Q, err, clogged] : reps) {
+      for (const auto& [Q, err, clogged, time_limited] : reps) {
+        p.time_limited += time_limited;
         if (clogged) {
           ++p.clogged;
           continue;

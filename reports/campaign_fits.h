@@ -19,6 +19,7 @@ namespace beverloo {
 struct SeriesPoint {
   double w = 0, Q = 0, Q_err = 0;
   int replicas = 0, clogged = 0;
+  int time_limited = 0;  ///< replicas that stopped at run.t_max before reaching the target error
   bool flowing() const { return Q > 0 && Q_err > 0; }
 };
 
@@ -40,6 +41,11 @@ struct Series {
   std::string message;  ///< why there is no fit
   int clogged_points() const;
 };
+
+/// A fit whose beta has a larger relative error than this is "not determined" (index.html).
+inline constexpr double kBetaDeterminedRelErr = 0.25;
+/// "ok", or "not determined: ..." naming why (beta's relative error; k outside [0, smallest w]).
+std::string fit_quality(const Series& s);
 
 struct Crossover {
   std::string key, label;

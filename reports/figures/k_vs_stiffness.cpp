@@ -1,0 +1,48 @@
+// The offset k versus the paper's softness axes, per dissipation setting: E_sp for SP, K_b
+// for DP (DP groups also keep K_l and E_c fixed).
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "figure.h"
+
+namespace beverloo::figures {
+namespace {
+
+ReportFigure k_versus(const FigureContext& c, bool dp) {
+  Figure f(dp ? "k_vs_Kb" : "k_vs_Esp", dp ? "Offset k versus bending stiffness K_b (DP)" : "Offset k versus stiffness E_sp (SP)",
+           dp ? "K_b (epsilon_0)" : "E_sp (g rho sigma_avg^(d+1))", "k / sigma_avg", "set logscale x\n");
+  auto stiffness = [dp](const Series* s) { return dp ? s->K_b : s->E_sp; };
+  std::map<std::string, std::vector<const Series*>> by;
+  for (const Series& s : c.fits.series) {
+    if (!s.fit || s.is_dp() != dp) continue;
+    std::string label = std::to_string(s.dimension) + "D ";
+    if (dp) label += s.model + " K_l=" + num(s.K_l) + " E_c=" + num(s.E_c) + " ";
+    by[label + "lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N)].push_back(&s);
+  }
+  std::vector<std::pair<std::string, std::vector<const Series*>>> lines;
+  for (auto& [label, list] : by) {
+    std::set<double> values;
+    for (const Series* s : list) values.insert(stiffness(s));
+    if (values.size() < 2) continue;
+    std::sort(list.begin(), list.end(), [&](const Series* a, const Series* b) { return stiffness(a) < stiffness(b); });
+    lines.emplace_back(label, list);
+  }
+  int k = 0;
+  for (const auto& [label, list] : lines) {
+    const int block = f.begin_block(label + (dp ? ": K_b k k_err" : ": E_sp k k_err"));
+    for (const Series* s : list) f.data << num(stiffness(s)) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
+    f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2:3 with yerrorlines " +
+                      series_style(k++, static_cast<int>(lines.size())) + " title \"" + label + "\"");
+  }
+  return finish(f, c.dir,
+                dp ? "needs fitted DP series at two or more K_b with the other parameters equal"
+                   : "needs fitted SP series at two or more E_sp with the other parameters equal");
+}
+
+}  // namespace
+
+ReportFigure k_vs_Esp(const FigureContext& c) { return k_versus(c, false); }
+ReportFigure k_vs_Kb(const FigureContext& c) { return k_versus(c, true); }
+
+}  // namespace beverloo::figures

@@ -1,0 +1,139 @@
+#include "index_html.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "reports/number_format.h"
+
+namespace beverloo {
+namespace {
+
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
+  return o;
+}
+
+std::string pm(double v, double e) { return format_with_error(v, e, " &plusmn; "); }
+
+// What a job's final state means (docs/sql-layout.md, `campaign status`).
+const char* state_meaning(const std::string& state) {
+  if (state == "done") return "finished; its result is stored (see the runs view's status for how it ended)";
+  if (state == "clogged") return "the flow stopped for good: no exit for run.clog_time";
+  if (state == "failed") return "every attempt failed (blow-up, I/O); see the attempts table";
+  if (state == "cancelled") return "cancelled by `beverloo campaign cancel`";
+  if (state == "running") return "an attempt is in flight";
+  if (state == "pending") return "not started yet";
+  return "";
+}
+
+void run_summary(std::ostringstream& html, db::Database& db) {
+  db::Statement c = db.prepare("SELECT name, created_at FROM campaigns ORDER BY id DESC LIMIT 1");
+  const bool have = c.step();
+  html << "<h1>beverloo report: " << html_escape(have ? c.get_text(0) : std::string("(no campaign)")) << "</h1>\n";
+  html << "<p class=units>Units: lengths in sigma_avg (the mean particle diameter), times in "
+          "t0 = (sigma_avg / g)<sup>1/2</sup>, velocities in sigma_avg / t0, flow rates Q in "
+          "Q_0 = sigma_avg<sup>d</sup> / t0 (area per time in 2D, volume per time in 3D). "
+          "lambda = zeta / mu is dimensionless.</p>\n";
+  html << "<h2>Run summary</h2>\n<table><tr><th>jobs by state</th><th>count</th><th>meaning</th></tr>\n";
+  db::Statement s = db.prepare(
+      "SELECT j.state, count(*) FROM jobs j JOIN campaign_jobs cj ON cj.job_key = j.key "
+      "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) GROUP BY j.state ORDER BY j.state");
+  while (s.step())
+    html << "<tr><td>" << s.get_text(0) << "</td><td>" << s.get_int(1) << "</td><td>" << state_meaning(s.get_text(0))
+         << "</td></tr>\n";
+  html << "</table>\n<table><tr><th>how finished runs ended</th><th>count</th><th>meaning</th></tr>\n";
+  db::Statement st = db.prepare(
+      "SELECT r.status, count(*) FROM results r JOIN campaign_jobs cj ON cj.job_key = r.job_key "
+      "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) GROUP BY 1 ORDER BY 1");
+  while (st.step()) {
+    const std::string status = st.get_text(0);
+    const char* meaning = status == "converged"    ? "Q reached run.target_rel_err"
+                          : status == "time_limit" ? "run.t_max came first: Q is stored with its (larger) error"
+                          : status == "clogged"    ? "the flow stopped: no exit for run.clog_time"
+                                                   : "";
+    html << "<tr><td>" << html_escape(status) << "</td><td>" << st.get_int(1) << "</td><td>" << meaning << "</td></tr>\n";
+  }
+  html << "</table>\n<table><tr><th>failed attempts by class</th><th>count</th></tr>\n";
+  db::Statement fcl = db.prepare(
+      "SELECT a.failure_class, count(*) FROM attempts a JOIN campaign_jobs cj ON cj.job_key = a.job_key "
+      "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) AND a.failure_class IS NOT NULL GROUP BY 1");
+  bool any = false;
+  while (fcl.step()) {
+    any = true;
+    html << "<tr><td>" << html_escape(fcl.get_text(0)) << "</td><td>" << fcl.get_int(1) << "</td></tr>\n";
+  }
+  if (!any) html << "<tr><td>none</td><td>0</td></tr>\n";
+  db::Statement t = db.prepare(
+      "SELECT coalesce(sum(r.wall_seconds), 0), coalesce(sum(r.steps), 0) FROM results r JOIN campaign_jobs cj ON "
+      "cj.job_key = r.job_key WHERE cj.campaign_id = (SELECT max(id) FROM campaigns)");
+  t.step();
+  html << "</table>\n<p>Engine time: " << format_value(std::round(t.get_double(0)), 6) << " s over " << t.get_int(1)
+       << " time steps.</p>\n";
+}
+
+void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
+  html << "<h2>Beverloo fits Q = C (w - k)<sup>beta</sup></h2>\n"
+       << "<p>Weighted least squares over the flowing points of each series (GSL); errors from the covariance, "
+          "scaled by chi2_red when it exceeds 1. A fit is flagged <em>not determined</em> when beta's relative error "
+          "exceeds " << format_value(100 * kBetaDeterminedRelErr, 2) << " % or k lies outside [0, the smallest w].</p>\n"
+       << "<table><tr><th>series</th><th>points</th><th>clogged</th><th>C / Q_0</th><th>k / sigma_avg</th><th>beta</th>"
+       << "<th>chi2_red</th><th>quality</th></tr>\n";
+  for (const Series& s : fits.series) {
+    int flowing = 0;
+    for (const auto& p : s.points) flowing += p.flowing();
+    html << "<tr><td>" << html_escape(s.label) << "</td><td>" << flowing << "</td><td>" << s.clogged_points() << "</td>";
+    if (s.fit) {
+      const std::string quality = fit_quality(s);
+      html << "<td>" << pm(s.fit->C, s.fit->C_err) << "</td><td>" << pm(s.fit->k, s.fit->k_err) << "</td><td>"
+           << pm(s.fit->beta, s.fit->beta_err) << "</td><td>" << format_value(s.fit->chi2_red, 2) << "</td><td"
+           << (quality == "ok" ? ">" : " class=flag>") << html_escape(quality) << "</td>";
+    } else {
+      html << "<td colspan=5>no fit: " << html_escape(s.message) << "</td>";
+    }
+    html << "</tr>\n";
+  }
+  html << "</table>\n<p><a href=\"beverloo_fits.csv\">CSV</a> &middot; <a href=\"beverloo_fits.md\">Markdown</a> "
+          "(full precision)</p>\n";
+  html << "<h2>Crossover fits beta(lambda)</h2>\n<table><tr><th>group</th><th>points</th><th>lambda_c</th><th>b</th>"
+       << "<th>beta(lambda=0)</th><th>beta(lambda=inf)</th></tr>\n";
+  for (const Crossover& g : fits.crossovers) {
+    html << "<tr><td>" << html_escape(g.label) << "</td><td>" << g.finite.size() << "</td>";
+    if (g.fit)
+      html << "<td>" << pm(g.fit->lambda_c, g.fit->lambda_c_err) << "</td><td>" << pm(g.fit->b, g.fit->b_err) << "</td>";
+    else
+      html << "<td colspan=2>no fit: " << html_escape(g.message) << "</td>";
+    auto limit = [](const Series* s) { return s && s->fit ? pm(s->fit->beta, s->fit->beta_err) : std::string(); };
+    html << "<td>" << limit(g.limit0) << "</td><td>" << limit(g.limit_inf) << "</td></tr>\n";
+  }
+  html << "</table>\n<p><a href=\"crossover_fits.csv\">CSV</a> &middot; <a href=\"crossover_fits.md\">Markdown</a> "
+          "(full precision)</p>\n";
+}
+
+}  // namespace
+
+std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures) {
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>beverloo report</title>\n"
+       << "<style>body{font-family:sans-serif;max-width:1100px;margin:auto;padding:0 8px}"
+       << "table{border-collapse:collapse;display:block;overflow-x:auto}"
+       << "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}td:first-child{text-align:left}"
+       << "td.flag{color:#a00}img{max-width:100%;height:auto}</style></head><body>\n";
+  run_summary(html, db);
+  fit_tables(html, fits);
+  html << "<h2>Figures</h2>\n";
+  for (const ReportFigure& f : figures) {
+    html << "<h3>" << html_escape(f.title) << "</h3>\n";
+    if (f.made)
+      html << "<p><img src=\"" << f.name << ".svg\" alt=\"" << html_escape(f.title) << "\"></p>\n<p><a href=\"" << f.name
+           << ".png\">PNG</a> &middot; <a href=\"" << f.name << ".dat\">data</a> &middot; <a href=\"" << f.name
+           << ".gp\">gnuplot script</a></p>\n";
+    else
+      html << "<p>Not made: " << html_escape(f.why_not) << ".</p>\n";
+  }
+  html << "</body></html>\n";
+  return html.str();
+}
+
+}  // namespace beverloo

@@ -49,6 +49,7 @@ class DpSystem {
   ParticleState<2>& verts() { return verts_; }
   const ParticleState<2>& verts() const { return verts_; }
   DpForceField& forces() { return *ff_; }
+  const DpForceField& forces() const { return *ff_; }
   const PolygonSet& polygons() const { return poly_; }
   const DpShape& shape() const { return shape_; }
 

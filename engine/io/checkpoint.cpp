@@ -6,25 +6,9 @@
 #include "core/atomic_file.h"
 #include "../protocol/hopper_run.h"
 #include "h5.h"
+#include "vec_io.h"
 
 namespace beverloo {
-namespace {
-
-template <int D>
-std::vector<double> flatten(const VecArray<D>& a) {
-  std::vector<double> out(a.size() * D);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (int d = 0; d < D; ++d) out[i * D + d] = a[i][d];
-  return out;
-}
-template <int D>
-void unflatten(const std::vector<double>& in, VecArray<D>& a, const std::string& name) {
-  if (in.size() != a.size() * D) throw IoError("checkpoint: " + name + " has the wrong size");
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (int d = 0; d < D; ++d) a[i][d] = in[i * D + d];
-}
-
-}  // namespace
 
 template <int D>
 void HopperRun<D>::save_checkpoint(const std::string& target) const {
@@ -47,15 +31,7 @@ void HopperRun<D>::save_checkpoint(const std::string& target) const {
     h5::write(p, "f", flatten<D>(s_.f), {hsize_t(s_.size()), hsize_t(D)});
     h5::write(p, "species", s_.species);
     h5::write(p, "exited", s_.exited);
-    if constexpr (D == 2) {
-      if (dp_) {  // DP: the vertices are the state; the bodies above are their centroids
-        const ParticleState<2>& vs = dp_->verts();
-        H5Handle vg = h5::create_group(f, "vertices");
-        h5::write(vg, "x", flatten<2>(vs.x), {hsize_t(vs.size()), hsize_t(2)});
-        h5::write(vg, "v", flatten<2>(vs.v), {hsize_t(vs.size()), hsize_t(2)});
-        h5::write(vg, "f", flatten<2>(vs.f), {hsize_t(vs.size()), hsize_t(2)});
-      }
-    }
+    model_->save_checkpoint(f);  // the model's own state (DP: the vertices)
     const auto& st = rng_.state();
     h5::write(f, "rng_state", std::vector<std::uint64_t>(st.begin(), st.end()));
     H5Handle r = h5::create_group(f, "record");
@@ -81,10 +57,7 @@ void HopperRun<D>::load_checkpoint(const std::string& source) {
   const std::string job = h5::attr_string(f, "job_json");
   if (job != c_.to_json().dump())
     throw ConfigError("job", "differs from the job of the checkpoint " + source + "; refusing to resume a different job");
-  s_.sp = Species::bidisperse(D, c_.size_ratio);
-  if constexpr (D == 2) {
-    if (dp_) s_.sp = dp_->body_species();
-  }
+  s_.sp = model_->body_species();
   s_.resize(c_.N);
   H5Handle p = h5::open_group(f, "particles");
   unflatten<D>(h5::read_doubles(p, "x"), s_.x, "x");
@@ -95,21 +68,7 @@ void HopperRun<D>::load_checkpoint(const std::string& source) {
   if (static_cast<int>(s_.species.size()) != c_.N || static_cast<int>(s_.exited.size()) != c_.N)
     throw IoError("checkpoint: particle arrays have the wrong size");
   for (int i = 0; i < c_.N; ++i) s_.inv_mass[i] = 1.0 / s_.sp.mass[s_.species[i]];
-  if constexpr (D == 2) {
-    if (dp_) {
-      ParticleState<2>& vs = dp_->verts();
-      const PolygonSet& poly = dp_->polygons();
-      for (int i = 0; i < vs.size(); ++i) {
-        vs.species[i] = s_.species[poly.owner[i]];
-        vs.inv_mass[i] = 1.0 / vs.sp.mass[vs.species[i]];
-      }
-      H5Handle vg = h5::open_group(f, "vertices");
-      unflatten<2>(h5::read_doubles(vg, "x"), vs.x, "vertices/x");
-      unflatten<2>(h5::read_doubles(vg, "v"), vs.v, "vertices/v");
-      unflatten<2>(h5::read_doubles(vg, "f"), vs.f, "vertices/f");
-      dp_->sync_bodies(s_);
-    }
-  }
+  model_->load_checkpoint(f, s_);
   s_.step = h5::attr_int64(f, "step");
   const auto st = h5::read_uint64(f, "rng_state");
   if (st.size() != 4) throw IoError("checkpoint: bad rng_state");

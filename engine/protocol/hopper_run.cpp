@@ -14,6 +14,8 @@
 #include "../io/result_file.h"
 #include "../io/trajectory.h"
 #include "../units.h"
+#include "../models/dp_model.h"
+#include "../models/sp_model.h"
 #include "placement.h"
 
 namespace beverloo {
@@ -40,16 +42,10 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       obs_(c),
       estimator_(c.run),
       pile_finder_(c.N) {
-  ff_ = std::make_unique<ForceField<D>>(c_, hopper_);
+  model_ = make_model<D>(c_, hopper_);
   body_drag_ = drag_coefficients(c_.zeta, c_.drag_rate, Species::bidisperse(D, c_.size_ratio).mass);
-  if constexpr (D == 2) {
-    if (c_.is_dp()) {
-      dp_ = std::make_unique<DpSystem>(c_, hopper_);
-      bodies_list_ = std::make_unique<NeighborList<D>>(c_.skin);
-      exits_.set_lateral_slack(dp_->shape().bounding_diameter(1));
-      reinjector_.set_extra_test([this](int m, const Vec<D>& centre) { return dp_->spot_is_free(m, centre); });
-    }
-  }
+  exits_.set_lateral_slack(model_->lateral_slack());
+  if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
   rec_.exit_time.reserve(1 << 16);
   rec_.exit_particle.reserve(1 << 16);
   rec_.exit_size.reserve(1 << 16);
@@ -65,27 +61,24 @@ std::string HopperRun<D>::path(const std::string& name) const {
 }
 
 template <int D>
-void HopperRun<D>::place_and_minimize() {
-  FireResult fr;
+ForceField<D>& HopperRun<D>::forces() {
+  if (auto* sp = dynamic_cast<SpModel<D>*>(model_.get())) return sp->forces();
+  throw std::logic_error("HopperRun::forces(): a DP run has no SP force field");
+}
+
+template <int D>
+DpSystem* HopperRun<D>::dp() {
   if constexpr (D == 2) {
-    if (dp_) {
-      dp_->place_bodies(s_, rng_);
-      dp_->build_polygons(s_, rng_);
-      set_ceiling();
-      fr = dp_->minimize(c_.fire, ts_.dt);
-      dp_->sync_bodies(s_);
-    }
+    if (auto* m = dynamic_cast<DpModel*>(model_.get())) return &m->system();
   }
-  if (!dp_) {
-    place_randomly(s_, c_, hopper_, rng_);
-    set_ceiling();
-    SimConfig soft = c_;
-    soft.E_sp = std::min(c_.E_sp, c_.fire.max_pair_stiffness);
-    ForceField<D> minimiser_forces(soft, hopper_);
-    minimiser_forces.set_gravity(0);
-    minimiser_forces.set_dissipation(false);
-    fr = fire_minimize(s_, minimiser_forces, c_.fire, ts_.dt);
-  }
+  return nullptr;
+}
+
+template <int D>
+void HopperRun<D>::place_and_minimize() {
+  model_->place(s_, rng_);
+  set_ceiling();
+  const FireResult fr = model_->minimize(s_, ts_.dt);
   fire_iterations_ = fr.iterations;
   fire_max_force_ = fr.max_force;
   if (!fr.converged) {
@@ -109,26 +102,7 @@ void HopperRun<D>::prepare() {
     check_containment();
     s_.step = 0;
   }
-  if constexpr (D == 2) {
-    if (dp_) {
-      dp_->verts().step = s_.step;
-      DpForceField& f = dp_->forces();
-      f.set_gravity(c_.gravity);
-      f.set_dissipation(true);
-      f.list().invalidate();
-      bodies_list_->invalidate();
-      // as for SP: the forces of the resumed state equal those of the uninterrupted run
-      if (s_.step == 0) f.compute(dp_->verts());
-    }
-  }
-  if (!dp_) {
-    ff_->set_gravity(c_.gravity);
-    ff_->set_dissipation(true);
-    ff_->list().invalidate();
-    // Forces at the start (or the resumed) state: identical to those the uninterrupted run holds,
-    // because the pair sums do not depend on when the list was built (see neighbor_list.h).
-    if (s_.step == 0) ff_->compute(s_);
-  }
+  model_->start_flow(s_);
   const double top = set_ceiling();
   if (have_dir && c_.run.trajectory_every_steps > 0)
     traj_.reset(new Trajectory{H5mdTrajectory<D>(path("trajectory.h5"), c_, s_, top, resumed_times_ ? s_.step : -1)});
@@ -139,22 +113,12 @@ void HopperRun<D>::prepare() {
 template <int D>
 void HopperRun<D>::copy_state_from(const HopperRun& other) {
   s_ = other.s_;
-  if constexpr (D == 2) {
-    if (dp_) {
-      dp_->verts() = other.dp_->verts();
-      dp_->forces().list().invalidate();
-      bodies_list_->invalidate();
-    }
-  }
-  ff_->list().invalidate();
+  model_->copy_state_from(*other.model_);
 }
 
 template <int D>
 std::int64_t HopperRun<D>::neighbor_builds() {
-  if constexpr (D == 2) {
-    if (dp_) return dp_->forces().list().builds();
-  }
-  return ff_->list().builds();
+  return model_->neighbor_builds();
 }
 
 template <int D>
@@ -179,52 +143,27 @@ void HopperRun<D>::reinject_exited(NeighborList<D>& list) {
     if (!placed_as_ruled) ++rec_.reinjection_fallbacks;
     list.relocate(i, s_, hopper_);
     if (!lanes) in_pile_[i] = placed_as_ruled;  // resting on the pile; a fallback particle is in the air
-    if constexpr (D == 2) {
-      if (dp_) dp_->reinject(i, s_.x[i], s_.v[i], rng_.uniform(0, 2 * units::pi));
-    }
+    model_->reinjected(i, s_, rng_);
   }
+}
+
+template <int D>
+void HopperRun<D>::between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list) {
+  exits_.update(bodies, step_t_next_, rec_);
+  if (c_.reinject && !exits_.to_reinject().empty()) reinject_exited(body_list);
 }
 
 template <int D>
 void HopperRun<D>::step_once() {
-  if (dp_) return step_once_dp();
-  const double t_next = (s_.step + 1) * ts_.dt;
-  const StepReport r = velocity_verlet_step(s_, *ff_, ts_.dt, [&](ParticleState<D>& st) {
-    exits_.update(st, t_next, rec_);
-    if (c_.reinject && !exits_.to_reinject().empty()) reinject_exited(ff_->list());
-  });
-  if (!r.finite) throw InstabilityError("NaN or infinite position/velocity at t = " + std::to_string(time()));
-  if (r.forces.max_overlap > c_.max_overlap)
-    throw InstabilityError("pair overlap 1 - r/sigma = " + std::to_string(r.forces.max_overlap) + " beyond max_overlap = " +
-                           std::to_string(c_.max_overlap) + " at t = " + std::to_string(time()));
+  step_t_next_ = (s_.step + 1) * ts_.dt;
+  const StepReport r = model_->step(s_, ts_.dt, *this);
+  model_->check_step(r, time(), c_.max_overlap);
   rec_.max_overlap_seen = std::max(rec_.max_overlap_seen, r.forces.max_overlap);
 }
 
 template <int D>
-void HopperRun<D>::step_once_dp() {
-  if constexpr (D == 2) {
-    const double t_next = (s_.step + 1) * ts_.dt;
-    const StepReport r = velocity_verlet_step(dp_->verts(), dp_->forces(), ts_.dt, [&](ParticleState<2>&) {
-      dp_->sync_bodies(s_);  // exits are counted when the centroid crosses the orifice
-      exits_.update(s_, t_next, rec_);
-      if (c_.reinject && !exits_.to_reinject().empty()) reinject_exited(*bodies_list_);
-    });
-    s_.step = dp_->verts().step;
-    dp_->sync_bodies(s_);
-    if (!r.finite) throw InstabilityError("NaN or infinite vertex position/velocity at t = " + std::to_string(time()));
-    if (r.forces.max_overlap > c_.max_overlap)
-      throw InstabilityError("contact overlap 1 - d/delta = " + std::to_string(r.forces.max_overlap) +
-                             " beyond max_overlap = " + std::to_string(c_.max_overlap) + " at t = " + std::to_string(time()) +
-                             dp_->forces().describe_worst_contact(dp_->verts(), dp_->polygons()));
-    rec_.max_overlap_seen = std::max(rec_.max_overlap_seen, r.forces.max_overlap);
-  }
-}
-
-template <int D>
 void HopperRun<D>::check_containment() const {
-  if constexpr (D == 2) {
-    if (dp_) dp_->check_vertices(time());
-  }
+  model_->check_containment(time());
   for (int i = 0; i < s_.size(); ++i) {
     if (!hopper_.contains(s_.x[i]) || s_.x[i][kUp<D>] > ceiling_ ||
         s_.x[i][kUp<D>] < -(c_.reinjection.drop_depth_diameters + 10) * s_.sigma(i)) {
@@ -258,10 +197,7 @@ RunResult HopperRun<D>::run() {
     const std::int64_t step = s_.step;
     const double t = time();
     if (step % sample_steps == 0) {
-      if constexpr (D == 2) {
-        if (dp_) dp_->body_friction(friction_scratch_);
-      }
-      if (!dp_) ff_->contact().friction_forces(s_, friction_scratch_);
+      model_->body_friction(s_, friction_scratch_);
       obs_.sample(s_, t, friction_scratch_, body_drag_);
     }
     if (traj_ && step % traj_steps == 0) traj_->writer.write_frame(s_, t);

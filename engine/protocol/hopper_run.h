@@ -16,6 +16,7 @@
 #include "../config.h"
 #include "../dp/dp_system.h"
 #include "../forces/force_field.h"
+#include "../models/hopper_model.h"
 #include "../geometry/hopper.h"
 #include "../integrate/time_step.h"
 #include "../rng.h"
@@ -47,7 +48,7 @@ struct RunOptions {
 };
 
 template <int D>
-class HopperRun {
+class HopperRun : private StepHook<D> {
  public:
   HopperRun(const SimConfig& c, RunOptions options);
   ~HopperRun();
@@ -61,16 +62,18 @@ class HopperRun {
 
   /// Per-particle state: SP particles, or the DP polygons' centroids (bodies).
   ParticleState<D>& state() { return s_; }
-  /// The SP force field (not used by DP runs).
-  ForceField<D>& forces() { return *ff_; }
+  /// The SP force field; throws std::logic_error for a DP run (which has none).
+  ForceField<D>& forces();
   /// The vertex half of a DP run; nullptr for SP.
-  DpSystem* dp() { return dp_.get(); }
+  DpSystem* dp();
+  /// The model (SP or DP) behind the protocol.
+  HopperModel<D>& model() { return *model_; }
   /// Continue from another run's state (benchmarks: every timed run from one warmed state).
   void copy_state_from(const HopperRun& other);
   /// Verlet-list builds so far (vertex list for DP).
   std::int64_t neighbor_builds();
   /// Degrees of freedom advanced per step: particles (SP) or vertices (DP).
-  std::int64_t moving_points() const { return dp_ ? dp_->verts().size() : s_.size(); }
+  std::int64_t moving_points() const { return model_->moving_points(s_); }
   const Hopper<D>& hopper() const { return hopper_; }
   const FlowRecord& record() const { return rec_; }
   const TimeStepChoice& time_step() const { return ts_; }
@@ -81,7 +84,8 @@ class HopperRun {
 
  private:
   void step_once();
-  void step_once_dp();
+  /// StepHook: exits counted, exited particles reinjected, between drift and forces.
+  void between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list) override;
   /// The reinjection of the exited particles listed by exits_ (list: over the particles, or
   /// over the DP bodies), between drift and force evaluation.
   void reinject_exited(NeighborList<D>& list);
@@ -98,11 +102,8 @@ class HopperRun {
   TimeStepChoice ts_;
   Hopper<D> hopper_;
   ParticleState<D> s_;
-  std::unique_ptr<ForceField<D>> ff_;
-  /// DP only (2D): vertices, polygons and their forces; bodies_list_ links the bodies for the
-  /// pile finder (the SP list plays that part for SP).
-  std::unique_ptr<DpSystem> dp_;
-  std::unique_ptr<NeighborList<D>> bodies_list_;
+  std::unique_ptr<HopperModel<D>> model_;  ///< SP or DP: forces, their state, placement
+  double step_t_next_ = 0;                  ///< the time at the end of the step being taken
   Rng rng_;
   FlowRecord rec_;
   ExitCounter<D> exits_;

@@ -1,0 +1,49 @@
+#!/bin/bash
+# Are two beverloo binaries' results identical? Runs one short job per model (SP 2D, SP 3D,
+# smooth DP, rough DP, and the authors' options with the lanes rule) with each binary and
+# compares result.h5 (h5dump at 17 digits: every dataset and attribute; the timing attributes
+# wall_seconds and particle_steps_per_second aside) and summary.json (timing fields aside).
+# Usage: bench/result_identity.sh OLD_BINARY NEW_BINARY [WORKDIR]
+# For refactorings that must change nothing (issue 14.6); exit 0 if all are identical.
+set -euo pipefail
+OLD=$1 NEW=$2 WORK=${3:-$(mktemp -d)}
+mkdir -p "$WORK"
+declare -A JOBS=(
+  [sp2d]='{"dimension": 2, "N": 300, "W": 16, "w": 5, "zeta": 0.5, "mu": 0, "seed": 3, "run": {"t_max": 30, "min_window": 10, "min_transient": 5}}'
+  [sp3d]='{"dimension": 3, "N": 600, "W": 9, "w": 4, "zeta": 0, "mu": 10, "seed": 3, "run": {"t_max": 15, "min_window": 5, "min_transient": 3, "rate_bin": 0.5}}'
+  [dp_smooth]='{"model": "dp_smooth", "N": 40, "W": 10, "w": 4, "zeta": 0.5, "mu": 0, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
+  [dp_rough]='{"model": "dp_rough", "N": 40, "W": 10, "w": 4, "zeta": 0, "mu": 2, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
+  [sp2d_authors]='{"dimension": 2, "N": 300, "W": 16, "w": 5, "zeta": 0, "mu": 8.5, "mu_n": 0, "E_sp": 138.889, "sp_contact_law": "force", "seed": 3, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5}, "run": {"t_max": 30, "min_window": 10, "min_transient": 5}}'
+)
+status=0
+for name in "${!JOBS[@]}"; do
+  echo "${JOBS[$name]}" > "$WORK/$name.json"
+  for side in old new; do
+    bin=$OLD; [ $side = new ] && bin=$NEW
+    rm -rf "$WORK/$name.$side"
+    "$bin" simulate "$WORK/$name.json" -o "$WORK/$name.$side" --progress quiet > /dev/null
+  done
+  if python3 - "$WORK/$name.old" "$WORK/$name.new" <<'PY'
+import json, re, subprocess, sys
+def dump(d):
+    # every dataset and attribute at full precision, the timing attributes cut out
+    text = subprocess.run(["h5dump", "-m", "%.17g", d + "/result.h5"], check=True, capture_output=True, text=True).stdout
+    text = re.sub(r'ATTRIBUTE "(wall_seconds|particle_steps_per_second)" \{.*?\n\s*\}\n', "", text, flags=re.S)
+    return text.replace(d, "DIR")
+def summary(d):
+    s = json.load(open(d + "/summary.json"))
+    for k in ("wall_seconds", "particle_steps_per_second"):
+        s.pop(k, None)
+    return s
+a, b = sys.argv[1:3]
+same = dump(a) == dump(b) and summary(a) == summary(b)
+sys.exit(0 if same else 1)
+PY
+  then
+    echo "identical  $name"
+  else
+    echo "DIFFERENT  $name (h5dump -m %.17g of $WORK/$name.{old,new}/result.h5)"
+    status=1
+  fi
+done
+exit $status

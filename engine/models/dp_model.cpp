@@ -1,0 +1,85 @@
+#include "dp_model.h"
+
+#include <string>
+
+#include "core/errors.h"
+#include "../io/vec_io.h"
+#include "../units.h"
+
+namespace beverloo {
+
+void DpModel::place(ParticleState<2>& bodies, Rng& rng) {
+  dp_.place_bodies(bodies, rng);
+  dp_.build_polygons(bodies, rng);
+}
+
+FireResult DpModel::minimize(ParticleState<2>& bodies, double dt) {
+  const FireResult r = dp_.minimize(c_.fire, dt);
+  dp_.sync_bodies(bodies);
+  return r;
+}
+
+void DpModel::start_flow(ParticleState<2>& bodies) {
+  dp_.verts().step = bodies.step;
+  DpForceField& f = dp_.forces();
+  f.set_gravity(c_.gravity);
+  f.set_dissipation(true);
+  f.list().invalidate();
+  bodies_list_.invalidate();
+  // as for SP: the forces of the resumed state equal those of the uninterrupted run
+  if (bodies.step == 0) f.compute(dp_.verts());
+}
+
+StepReport DpModel::step(ParticleState<2>& bodies, double dt, StepHook<2>& hook) {
+  const StepReport r = velocity_verlet_step(dp_.verts(), dp_.forces(), dt, [&](ParticleState<2>&) {
+    dp_.sync_bodies(bodies);  // exits are counted when the centroid crosses the orifice
+    hook.between_drift_and_force(bodies, bodies_list_);
+  });
+  bodies.step = dp_.verts().step;
+  dp_.sync_bodies(bodies);
+  return r;
+}
+
+void DpModel::check_step(const StepReport& r, double t, double max_overlap) const {
+  if (!r.finite) throw InstabilityError("NaN or infinite vertex position/velocity at t = " + std::to_string(t));
+  if (r.forces.max_overlap > max_overlap) {
+    throw InstabilityError("contact overlap 1 - d/delta = " + std::to_string(r.forces.max_overlap) +
+                           " beyond max_overlap = " + std::to_string(max_overlap) + " at t = " + std::to_string(t) +
+                           dp_.forces().describe_worst_contact(dp_.verts(), dp_.polygons()));
+  }
+}
+
+void DpModel::reinjected(int i, ParticleState<2>& bodies, Rng& rng) {
+  dp_.reinject(i, bodies.x[i], bodies.v[i], rng.uniform(0, 2 * units::pi));
+}
+
+void DpModel::copy_state_from(const HopperModel<2>& other) {
+  dp_.verts() = static_cast<const DpModel&>(other).dp_.verts();
+  dp_.forces().list().invalidate();
+  bodies_list_.invalidate();
+}
+
+void DpModel::save_checkpoint(hid_t file) const {
+  // the vertices are the state; the bodies beside them are their centroids
+  const ParticleState<2>& vs = dp_.verts();
+  H5Handle vg = h5::create_group(file, "vertices");
+  h5::write(vg, "x", flatten<2>(vs.x), {hsize_t(vs.size()), hsize_t(2)});
+  h5::write(vg, "v", flatten<2>(vs.v), {hsize_t(vs.size()), hsize_t(2)});
+  h5::write(vg, "f", flatten<2>(vs.f), {hsize_t(vs.size()), hsize_t(2)});
+}
+
+void DpModel::load_checkpoint(hid_t file, ParticleState<2>& bodies) {
+  ParticleState<2>& vs = dp_.verts();
+  const PolygonSet& poly = dp_.polygons();
+  for (int i = 0; i < vs.size(); ++i) {
+    vs.species[i] = bodies.species[poly.owner[i]];
+    vs.inv_mass[i] = 1.0 / vs.sp.mass[vs.species[i]];
+  }
+  H5Handle vg = h5::open_group(file, "vertices");
+  unflatten<2>(h5::read_doubles(vg, "x"), vs.x, "vertices/x");
+  unflatten<2>(h5::read_doubles(vg, "v"), vs.v, "vertices/v");
+  unflatten<2>(h5::read_doubles(vg, "f"), vs.f, "vertices/f");
+  dp_.sync_bodies(bodies);
+}
+
+}  // namespace beverloo

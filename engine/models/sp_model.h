@@ -1,0 +1,42 @@
+#pragma once
+/// \file sp_model.h
+/// \brief Soft particles (physics.md 3): one body per particle, the SP force field over them.
+#include "../forces/force_field.h"
+#include "../geometry/hopper.h"
+#include "hopper_model.h"
+
+namespace beverloo {
+
+template <int D>
+class SpModel final : public HopperModel<D> {
+ public:
+  SpModel(const SimConfig& c, const Hopper<D>& hopper) : c_(c), hopper_(hopper), ff_(c, hopper) {}
+
+  Species body_species() const override { return Species::bidisperse(D, c_.size_ratio); }
+  void place(ParticleState<D>& bodies, Rng& rng) override;
+  FireResult minimize(ParticleState<D>& bodies, double dt) override;
+  void start_flow(ParticleState<D>& bodies) override;
+  StepReport step(ParticleState<D>& bodies, double dt, StepHook<D>& hook) override;
+  void check_step(const StepReport& r, double t, double max_overlap) const override;
+  void reinjected(int, ParticleState<D>&, Rng&) override {}
+  void body_friction(const ParticleState<D>& bodies, VecArray<D>& out) override { ff_.contact().friction_forces(bodies, out); }
+  void check_containment(double) const override {}
+  std::int64_t moving_points(const ParticleState<D>& bodies) const override { return bodies.size(); }
+  std::int64_t neighbor_builds() override { return ff_.list().builds(); }
+  std::vector<ForceTerm<D>*> terms() override { return ff_.terms(); }
+  ParticleState<D>& term_state(ParticleState<D>& bodies) override { return bodies; }
+  int body_of(int point) const override { return point; }
+  ForceReport compute_forces(ParticleState<D>& bodies) override { return ff_.compute(bodies); }
+  void copy_state_from(const HopperModel<D>&) override { ff_.list().invalidate(); }
+  void save_checkpoint(hid_t) const override {}  // the bodies are the whole state
+  void load_checkpoint(hid_t, ParticleState<D>&) override {}
+
+  ForceField<D>& forces() { return ff_; }
+
+ private:
+  SimConfig c_;
+  const Hopper<D>& hopper_;
+  ForceField<D> ff_;
+};
+
+}  // namespace beverloo

@@ -22,4 +22,23 @@ done
 after=$(sha256sum < "$WORK/c/campaign.sqlite")
 [ "$before" = "$after" ] || fail "the database file changed"
 "$BIN" query "$WORK/c" "PRAGMA user_version" > /dev/null || fail "reading a pragma must work"
+# introspection pragmas, also as table-valued functions, are reads
+"$BIN" query "$WORK/c" "PRAGMA table_info(jobs)" --format csv | grep -q '^0,key,' || fail "PRAGMA table_info(jobs)"
+"$BIN" query "$WORK/c" "SELECT name FROM pragma_table_info('runs') WHERE name = 'Q'" --format csv | grep -qx 'Q' \
+  || fail "pragma_table_info('runs')"
+set +e; "$BIN" query "$WORK/c" "UPDATE sqlite_master SET type = 'x'" > /dev/null 2>&1; rc=$?; set -e
+[ "$rc" -ne 0 ] || fail "a write of sqlite_master was accepted"
+# a query without end stops at its time limit, and one with too many rows is refused; nothing printed
+endless="WITH RECURSIVE c(x) AS (SELECT 1 UNION ALL SELECT x + 1 FROM c) SELECT count(*) FROM c"
+set +e; timeout 60 "$BIN" query "$WORK/c" "$endless" --max-seconds 1 > "$WORK/out" 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] || fail "an endless recursive CTE: exit $rc, expected 2 ($(cat "$WORK/err"))"
+[ ! -s "$WORK/out" ] && grep -q "max-seconds" "$WORK/err" || fail "the time limit is not named"
+set +e; "$BIN" query "$WORK/c" "WITH RECURSIVE c(x) AS (SELECT 1 UNION ALL SELECT x + 1 FROM c) SELECT x FROM c" \
+  --max-rows 100 > "$WORK/out" 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && [ ! -s "$WORK/out" ] && grep -q "max-rows" "$WORK/err" || fail "endless rows: exit $rc"
+# JSON output of values JSON cannot hold as such: a denormal, bytes that are not UTF-8, a blob
+"$BIN" query "$WORK/c" "SELECT 4.9e-324 AS d, CAST(x'ff41' AS TEXT) AS t, x'00ff' AS b" --format json > "$WORK/j" \
+  || fail "json output of a denormal / non-UTF-8 text"
+python3 -c "import json,sys; r=json.load(open(sys.argv[1]))[0]; assert r['d'] > 0 and r['b'] == \"x'00ff'\", r" "$WORK/j" \
+  || fail "json output is not valid JSON with the values: $(cat "$WORK/j")"
 echo "ok  query is read-only"

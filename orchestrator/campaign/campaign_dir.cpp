@@ -72,8 +72,15 @@ CampaignReader::Prepared::Prepared(const std::string& dir) {
   if (!campaign_dir::holds_campaign(dir)) throw MissingCampaign(dir);
 }
 
+namespace {
+db::Database::Mode reader_mode(const std::string& dir) {
+  // a directory we cannot write: SQLite could not make the WAL index there (nor could a writer)
+  return ::access(dir.c_str(), W_OK) == 0 ? db::Database::Mode::ReadOnly : db::Database::Mode::ReadOnlyImmutable;
+}
+}  // namespace
+
 CampaignReader::CampaignReader(const std::string& dir)
-    : prepared_(dir), db_(campaign_dir::database_path(dir), db::Database::Mode::ReadOnly) {
+    : prepared_(dir), db_(campaign_dir::database_path(dir), reader_mode(dir)) {
   db::check_store(db_);
 }
 

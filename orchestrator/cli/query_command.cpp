@@ -109,7 +109,7 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
       sqlite3_stmt* raw = nullptr;
       const int rc = sqlite3_prepare_v2(db.handle(), tail, static_cast<int>(end - tail), &raw, &tail);
       if (rc != SQLITE_OK) {
-        if (rc == SQLITE_AUTH)
+        if ((rc & 0xff) == SQLITE_AUTH || std::strcmp(sqlite3_errmsg(db.handle()), "not authorized") == 0)
           std::fprintf(stderr, "beverloo query: refused: queries are read-only (SELECT, WITH, EXPLAIN, reading PRAGMAs "
                                "and table_info, index_list, ...; no writes, ATTACH or setting PRAGMAs); nothing ran\n");
         else
@@ -207,7 +207,7 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
     std::fprintf(stderr, "beverloo query: %s\n", e.what());
     return exit_code::kConfig;
   } catch (const db::DbError& e) {
-    if (e.code() == SQLITE_AUTH) {
+    if ((e.code() & 0xff) == SQLITE_AUTH) {
       std::fprintf(stderr, "beverloo query: %s: queries are read-only (SELECT, WITH, EXPLAIN, reading PRAGMAs and "
                            "table_info, index_list, ...); nothing ran\n", e.what());
       return exit_code::kConfig;

@@ -24,7 +24,10 @@ class Statement;
 
 class Database {
  public:
-  enum class Mode { ReadWrite, ReadOnly };
+  /// ReadOnlyImmutable: for a directory we cannot write, where SQLite could not create the
+  /// WAL index (-shm) a reader of a WAL database needs; opened as immutable (nobody can write
+  /// the database there either: a writer needs the same directory).
+  enum class Mode { ReadWrite, ReadOnly, ReadOnlyImmutable };
   /// Opens (ReadWrite: creates) the file; sets extended result codes and a busy timeout.
   Database(const std::string& path, Mode mode);
   ~Database();

@@ -41,4 +41,15 @@ set +e; "$BIN" query "$WORK/c" "WITH RECURSIVE c(x) AS (SELECT 1 UNION ALL SELEC
   || fail "json output of a denormal / non-UTF-8 text"
 python3 -c "import json,sys; r=json.load(open(sys.argv[1]))[0]; assert r['d'] > 0 and r['b'] == \"x'00ff'\", r" "$WORK/j" \
   || fail "json output is not valid JSON with the values: $(cat "$WORK/j")"
+# a campaign in a directory its reader cannot write (as another user: root writes anywhere)
+if [ "$(id -u)" = 0 ] && id nobody > /dev/null 2>&1 && command -v su > /dev/null; then
+  cp "$BIN" "$WORK/bin" && chmod a+rx "$WORK" "$WORK/bin" && chmod -R a+rX "$WORK/c" && chmod a-w "$WORK/c"
+  su nobody -s /bin/sh -c "'$WORK/bin' query '$WORK/c' 'SELECT count(*) AS n FROM jobs' --format csv" > "$WORK/ro" 2>&1 \
+    || fail "query in a read-only campaign directory: $(cat "$WORK/ro")"
+  grep -qx 3 "$WORK/ro" || fail "query in a read-only directory printed: $(cat "$WORK/ro")"
+  su nobody -s /bin/sh -c "'$WORK/bin' campaign status --dir '$WORK/c'" > "$WORK/ro" 2>&1 \
+    || fail "campaign status in a read-only campaign directory: $(cat "$WORK/ro")"
+  chmod u+w "$WORK/c"
+  echo "ok  a read-only campaign directory can be queried"
+fi
 echo "ok  query is read-only"

@@ -95,6 +95,16 @@ std::vector<Tagged> values_of(const json& spec, const std::string& path) {
 
 std::vector<Point> expand_node(const json& node, const std::string& path);
 
+/// The most points a sweep may have (docs/sweeps.md). Checked before the points are made, so
+/// that a product of 10^12 is refused at once instead of exhausting memory.
+constexpr std::size_t kMaxSweepPoints = 1'000'000;
+
+void check_points(std::size_t n, const std::string& path, const std::string& what) {
+  if (n > kMaxSweepPoints)
+    throw SweepError(path, what + " makes more than " + std::to_string(kMaxSweepPoints) +
+                               " points (the limit of one sweep; split it into several)");
+}
+
 std::vector<Point> combine(const std::string& kind, const json& children, const std::string& path) {
   if (!children.is_array() || children.empty())
     throw SweepError(path, show(children).substr(0, 60) + ": " + kind + " takes a non-empty list of sweep nodes");
@@ -103,6 +113,10 @@ std::vector<Point> combine(const std::string& kind, const json& children, const 
     parts.push_back(expand_node(children[k], path + "[" + std::to_string(k) + "]"));
   std::vector<Point> out;
   if (kind == "union") {
+    std::size_t total = 0;
+    for (const auto& p : parts) total += p.size();
+    check_points(total, path, "this union");
+    out.reserve(total);
     for (auto& p : parts) out.insert(out.end(), p.begin(), p.end());
     return out;
   }
@@ -125,6 +139,11 @@ std::vector<Point> combine(const std::string& kind, const json& children, const 
   }
   // product: the first child varies slowest
   out = {Point{}};
+  std::size_t total = 1;
+  for (const auto& part : parts) {  // sizes are <= the limit each: the products below cannot overflow
+    total *= part.size();
+    check_points(total, path, "this product");
+  }
   for (const auto& part : parts) {
     std::vector<Point> next;
     next.reserve(out.size() * part.size());
@@ -138,7 +157,6 @@ std::vector<Point> combine(const std::string& kind, const json& children, const 
         next.push_back(std::move(p));
       }
     out.swap(next);
-    if (out.size() > 10'000'000) throw SweepError(path, "more than 1e7 points");
   }
   return out;
 }
@@ -161,7 +179,9 @@ std::vector<Point> expand_node(const json& node, const std::string& path) {
   std::vector<Point> out = {Point{}};
   for (auto it = node.begin(); it != node.end(); ++it) {
     const std::vector<Tagged> vals = values_of(it.value(), path + "." + it.key());
+    check_points(out.size() * vals.size(), path, "these axes");  // both <= the limit: no overflow
     std::vector<Point> next;
+    next.reserve(out.size() * vals.size());
     for (const Point& a : out)
       for (const Tagged& v : vals) {
         Point p = a;

@@ -24,6 +24,22 @@ check overflow    "a number does not fit a double" '{"w": 1e400, "zeta": 0.3, "m
 check explicit_N0 "N: must be in"       '{"w": 6, "zeta": 0.3, "mu": 0, "N": 0}'
 check wrapped_int "N: must be in"       '{"w": 6, "zeta": 0.3, "mu": 0, "N": 4294967336}'
 check deep        "nests deeper than 64"   "$(python3 -c "print('['*10000 + ']'*10000)")"
+check duplicate   'the key "w" is given twice'        '{"w": 5, "w": 6, "zeta": 0.3, "mu": 0}'
+check dup_nested  'the key "run.t_max" is given twice' '{"w": 6, "zeta": 0.3, "mu": 0, "run": {"t_max": 5, "t_max": 6}}'
+check lanes_3d    "reinjection.rule"        '{"w": 4, "zeta": 0.3, "mu": 0, "dimension": 3, "reinjection": {"rule": "lanes"}}'
+# a sweep whose product is 10^12 jobs is refused at once, not after reserving the memory
+python3 -c "
+import json
+axes = [{'w': [3 + i * 0.001 for i in range(1000)]}, {'zeta': [0.1 + i * 0.001 for i in range(1000)]},
+        {'mu': [0.1 + i * 0.001 for i in range(1000)]}, {'E_sp': [100 + i for i in range(1000)]}]
+json.dump({'name': 'huge', 'base': {'N': 50, 'W': 12}, 'sweep': {'product': axes}}, open('$WORK/huge.json', 'w'))"
+set +e; (ulimit -v 2000000; timeout 30 "$BIN" sweep check "$WORK/huge.json") 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "more than 1000000 points" "$WORK/err" || fail "a 10^12-job sweep: rc $rc, $(cat "$WORK/err")"
+echo "ok  a 10^12-job sweep refused before expansion"
+echo '{"name": "d", "base": {"N": 50, "W": 12, "zeta": 0.3, "mu": 0}, "sweep": {"union": [{"w": [3, 4]}, {"w": [4], "w": [5]}]}}' > "$WORK/dup.json"
+set +e; "$BIN" sweep check "$WORK/dup.json" 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q 'sweep.union\[1\].w" is given twice' "$WORK/err" || fail "a duplicate key in a sweep: rc $rc, $(cat "$WORK/err")"
+echo "ok  duplicate keys named with their place"
 # limits before memory or time is spent: no hang on a FIFO, no read of a device
 mkfifo "$WORK/fifo"
 set +e; timeout 10 "$BIN" simulate "$WORK/fifo" -o "$WORK/x" 2> "$WORK/err"; rc=$?; set -e

@@ -56,8 +56,8 @@ CoordinatorLock::~CoordinatorLock() {
 CampaignWriter::Prepared::Prepared(const std::string& dir, Open how) {
   if (how == Open::CreateIfMissing) {
     std::error_code ec;
-    fs::create_directories(fs::path(dir) / campaign_dir::kJobsDir, ec);
-    if (ec) throw IoError("cannot create " + (fs::path(dir) / campaign_dir::kJobsDir).string() + ": " + ec.message());
+    fs::create_directories(dir, ec);  // jobs/ once the store is known to be ours
+    if (ec) throw IoError("cannot create " + dir + ": " + ec.message());
   } else if (!campaign_dir::holds_campaign(dir)) {
     throw MissingCampaign(dir);
   }
@@ -66,6 +66,9 @@ CampaignWriter::Prepared::Prepared(const std::string& dir, Open how) {
 CampaignWriter::CampaignWriter(const std::string& dir, Open how)
     : prepared_(dir, how), lock_(dir), db_(campaign_dir::database_path(dir), db::Database::Mode::ReadWrite) {
   db::open_store(db_);
+  std::error_code ec;
+  fs::create_directories(fs::path(dir) / campaign_dir::kJobsDir, ec);
+  if (ec) throw IoError("cannot create " + (fs::path(dir) / campaign_dir::kJobsDir).string() + ": " + ec.message());
 }
 
 CampaignReader::Prepared::Prepared(const std::string& dir) {

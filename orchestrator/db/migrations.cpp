@@ -20,6 +20,18 @@ void check_store(Database& db) {
 }
 
 void open_store(Database& db) {
+  // Identity first, with reads only: another application's database must leave with the
+  // bytes it came with (switching it to WAL would rewrite its header).
+  {
+    const std::int64_t app = db.scalar_int("PRAGMA application_id");
+    const std::int64_t version = db.scalar_int("PRAGMA user_version");
+    if (app == 0 && version == 0) {
+      if (db.scalar_int("SELECT count(*) FROM sqlite_schema") != 0)
+        throw DbError("this file is an SQLite database of another application; refusing to touch it", SQLITE_MISMATCH);
+    } else {
+      check_store(db);
+    }
+  }
   db.exec("PRAGMA journal_mode=WAL");
   db.exec("PRAGMA synchronous=NORMAL");
   // Off while migrating (it cannot change inside a transaction): a migration may rebuild a table

@@ -15,7 +15,9 @@ for cmd in "campaign status --dir $WORK/d" "query $WORK/d SELECT_1_AS_one" "fit 
            "run $WORK/s.json --dir $WORK/d --workers 1" "campaign create $WORK/s.json --dir $WORK/d" \
            "campaign cancel --dir $WORK/d" "campaign retry --dir $WORK/d"; do
   read -r -a args <<< "$cmd"
-X
+  for k in "${!args[@]}"; do  # the query's SQL is one argument
+    if [[ ${args[$k]} == SELECT_* ]]; then args[$k]=${args[$k]//_/ }; fi
+  done
   set +e; "$BIN" "${args[@]}" > "$WORK/out" 2> "$WORK/err"; rc=$?; set -e
   [ "$rc" -ne 0 ] || fail "$cmd accepted another application's database"
   grep -qi "another application\|not a beverloo campaign" "$WORK/err" || fail "$cmd: $(cat "$WORK/err")"

@@ -1,11 +1,11 @@
 #include "series_labels.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <map>
 #include <set>
 
 #include "engine/parameters.h"
+#include "reports/number_format.h"
 
 namespace beverloo {
 namespace {
@@ -20,11 +20,7 @@ std::string dotted(const std::string& pointer) {
 
 std::string value_text(const json& v) {
   if (v.is_string()) return v.get<std::string>();
-  if (v.is_number_float()) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v.get<double>());
-    return b;
-  }
+  if (v.is_number_float()) return format_value(v.get<double>(), 4);
   return v.dump();
 }
 

@@ -20,7 +20,7 @@
 #include "engine/dp/dp_system.h"
 #include "engine/forces/force_field.h"
 #include "engine/geometry/make_hopper.h"
-#include "engine/integrate/time_step.h"
+#include "engine/models/model_time_step.h"
 #include "engine/integrate/velocity_verlet.h"
 #include "engine/rng.h"
 #include "engine/units.h"

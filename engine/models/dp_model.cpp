@@ -1,12 +1,43 @@
 #include "dp_model.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/errors.h"
+#include "../forces/harmonic_overlap.h"
 #include "../io/vec_io.h"
 #include "../units.h"
 
 namespace beverloo {
+
+TimeScales DpModel::time_scales(const SimConfig& c) {
+  // Per vertex (mass M/n_v); the contact acts on the reduced mass of two vertices.
+  const DpShape shape = DpShape::from_config(c);
+  const char* names[2] = {"small", "large"};
+  const double mu_max = std::max(c.mu_normal(), c.mu_tangential());  // the stronger friction
+  const double nv = shape.n_v;
+  TimeScales s;
+  for (int a = 0; a < 2; ++a) {
+    const double mv = shape.vertex_mass[a], l0 = shape.l0[a];
+    for (int b = a; b < 2; ++b) {
+      const double m_red = mv * shape.vertex_mass[b] / (mv + shape.vertex_mass[b]);
+      const double delta = 0.5 * (shape.delta[a] + shape.delta[b]);
+      const std::string pair = std::string(names[a]) + "-" + names[b];
+      s.oscillation(m_red, HarmonicOverlap::stiffness(c.dp.E_c, delta), "dp.E_c (" + pair + " vertex contact)");
+      if (mu_max > 0) s.damping(m_red / mu_max, "mu (kinetic friction, " + pair + " vertices)");
+    }
+    const std::string who = std::string(names[a]) + " vertex";
+    s.oscillation(mv, HarmonicOverlap::stiffness(c.E_w, 0.5 * shape.delta[a]), "E_w (wall, " + who + ")");
+    // edge spring K_l n_v between two vertices; area: |grad a|^2 ~ l0^2 per vertex;
+    // bending: moving one vertex by x turns three edge pairs, curvature 6 K_b/(n_v l0^4)
+    s.oscillation(0.5 * mv, c.dp.K_l * nv, "dp.K_l (segment length, " + who + ")");
+    s.oscillation(mv, c.dp.K_a * l0 * l0, "dp.K_a (area, " + who + ")");
+    if (c.dp.K_b > 0) s.oscillation(mv, 6 * c.dp.K_b / (nv * l0 * l0 * l0 * l0), "dp.K_b (bending, " + who + ")");
+    if (c.zeta > 0 || c.drag_rate > 0)
+      s.damping(mv / (c.zeta / nv + c.drag_rate * mv), std::string(c.drag_rate > 0 ? "zeta, drag_rate" : "zeta") + " (drag, " + who + ")");
+  }
+  return s;
+}
 
 void DpModel::place(ParticleState<2>& bodies, Rng& rng) {
   dp_.place_bodies(bodies, rng);

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "../dp/dp_system.h"
+#include "../integrate/time_step.h"
 #include "hopper_model.h"
 
 namespace beverloo {
@@ -13,6 +14,10 @@ namespace beverloo {
 class DpModel final : public HopperModel<2> {
  public:
   DpModel(const SimConfig& c, const Hopper<2>& hopper) : c_(c), dp_(c, hopper), bodies_list_(c.skin) {}
+
+  /// The stiffest terms of c's polygons, per vertex (contacts, walls, shape springs, friction,
+  /// drag), known before any model exists.
+  static TimeScales time_scales(const SimConfig& c);
 
   Species body_species() const override { return dp_.body_species(); }
   void place(ParticleState<2>& bodies, Rng& rng) override;

@@ -5,9 +5,10 @@
 /// owns its force terms and their state, places and relaxes its particles, advances them by a
 /// step, rebuilds a reinjected particle, and writes its own part of a checkpoint. The protocol
 /// sees one body per particle (SP: the particle; DP: the polygon's centroid) and never branches
-/// on the model. A new model: a class here, a case in make_model.cpp, its time scales in
-/// engine/integrate/time_step.cpp, and its terms in the generic tests (tests/physics/
-/// test_model_terms.cpp iterates over every term of every model through terms()).
+/// on the model. A new model: a class here with a static time_scales(const SimConfig&) (its
+/// stiffest terms, for dt "auto"), a case for each in make_model.cpp, and its terms in the
+/// generic tests (tests/physics/test_model_terms.cpp iterates over every term of every model
+/// through terms()).
 #include <functional>
 #include <memory>
 #include <string>

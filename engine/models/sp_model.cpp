@@ -4,9 +4,34 @@
 #include <string>
 
 #include "core/errors.h"
+#include "../forces/harmonic_overlap.h"
 #include "../protocol/placement.h"
 
 namespace beverloo {
+
+template <int D>
+TimeScales SpModel<D>::time_scales(const SimConfig& c) {
+  const Species sp = Species::bidisperse(c.dimension, c.size_ratio);
+  const char* names[2] = {"small", "large"};
+  const double mu_max = std::max(c.mu_normal(), c.mu_tangential());  // the stronger friction
+  TimeScales s;
+  for (int a = 0; a < 2; ++a) {
+    for (int b = a; b < 2; ++b) {
+      const double m_red = sp.mass[a] * sp.mass[b] / (sp.mass[a] + sp.mass[b]);
+      const std::string pair = std::string(names[a]) + "-" + names[b];
+      const double sig_ab = 0.5 * (sp.sigma[a] + sp.sigma[b]);
+      s.oscillation(m_red, HarmonicOverlap::stiffness(c.pair_energy(sig_ab), sig_ab), "E_sp (" + pair + " contact)");
+      if (mu_max > 0) s.damping(m_red / mu_max, "mu (kinetic friction, " + pair + ")");
+    }
+    // wall: U = (E_w/2)(1 - d/(sigma/2))^2, contact distance sigma/2, infinite wall mass
+    s.oscillation(sp.mass[a], HarmonicOverlap::stiffness(c.E_w, 0.5 * sp.sigma[a]),
+                  std::string("E_w (wall, ") + names[a] + " particle)");
+    if (c.zeta > 0 || c.drag_rate > 0)
+      s.damping(sp.mass[a] / (c.zeta + c.drag_rate * sp.mass[a]),
+                std::string(c.drag_rate > 0 ? "zeta, drag_rate" : "zeta") + " (drag, " + names[a] + " particle)");
+  }
+  return s;
+}
 
 template <int D>
 void SpModel<D>::place(ParticleState<D>& bodies, Rng& rng) {

@@ -3,6 +3,7 @@
 /// \brief Soft particles (physics.md 3): one body per particle, the SP force field over them.
 #include "../forces/force_field.h"
 #include "../geometry/hopper.h"
+#include "../integrate/time_step.h"
 #include "hopper_model.h"
 
 namespace beverloo {
@@ -11,6 +12,10 @@ template <int D>
 class SpModel final : public HopperModel<D> {
  public:
   SpModel(const SimConfig& c, const Hopper<D>& hopper) : c_(c), hopper_(hopper), ff_(c, hopper) {}
+
+  /// The stiffest terms of c's soft particles (pair contacts, walls, friction, drag), known
+  /// before any model exists so that a sweep can refuse an unstable dt.
+  static TimeScales time_scales(const SimConfig& c);
 
   Species body_species() const override { return Species::bidisperse(D, c_.size_ratio); }
   void place(ParticleState<D>& bodies, Rng& rng) override;

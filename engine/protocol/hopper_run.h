@@ -18,7 +18,7 @@
 #include "../forces/force_field.h"
 #include "../models/hopper_model.h"
 #include "../geometry/hopper.h"
-#include "../integrate/time_step.h"
+#include "../models/model_time_step.h"
 #include "../rng.h"
 #include "exit_counter.h"
 #include "flow_rate.h"

@@ -6,7 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
-#include "engine/integrate/time_step.h"
+#include "engine/models/model_time_step.h"
 #include "engine/io/job_output.h"
 #include "engine/json_file.h"
 #include "engine/protocol/hopper_run.h"

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <thread>
 
-#include "engine/integrate/time_step.h"
+#include "engine/models/model_time_step.h"
 #include "core/atomic_file.h"
 #include "orchestrator/campaign/job_files.h"
 

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include "sweep.h"
 
-#include "engine/integrate/time_step.h"
+#include "engine/models/model_time_step.h"
 #include "core/digest.h"
 #include "engine/json_file.h"
 #include "engine/parameters.h"

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "dp_support.h"
-#include "engine/integrate/time_step.h"
+#include "engine/models/model_time_step.h"
 #include "engine/integrate/velocity_verlet.h"
 #include "engine/protocol/hopper_run.h"
 

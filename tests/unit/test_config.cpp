@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/config.h"
-#include "engine/integrate/time_step.h"
+#include "engine/models/model_time_step.h"
 
 namespace beverloo {
 namespace {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # README's main-job command: install what is missing, build, run the quickstart campaign
-# (12 hopper flows, 2D SP, both dissipation limits; under a minute on 2 cores), which ends with
+# (14 hopper flows, 2D SP with the authors' model, both dissipation limits; 48 s on 2 cores), which ends with
 # the fits and the report in campaigns/quickstart/report/index.html; then show Q(w) and the fits.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -53,7 +53,7 @@ nlohmann::json read_json_file(const std::string& path, std::string* text) {
         case E::object_start:
         case E::array_start: {
           std::string name = element_name();
-          frames.push_back(Frame{event == E::array_start, std::move(name)});
+          frames.push_back(Frame{event == E::array_start, std::move(name), 0, {}});
           break;
         }
         case E::object_end:

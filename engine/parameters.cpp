@@ -291,8 +291,9 @@ std::string parameters_markdown() {
     if (p.models == ParamModels::Dp) models = " (DP only)";
     if (p.models == ParamModels::DpSmooth) models = " (dp_smooth only)";
     md << "| `" << p.path << "` | " << p.unit << " | " << p.default_text << " | " << (valid.empty() ? "any" : valid)
-       << " | " << (p.sweepable ? "yes" : "no") << " | " << (p.in_key ? "yes" : "no") << " | "
-       << (p.sql_column.empty() ? "" : "`" + std::string(p.sql_column) + "`") << " | " << p.doc << models << " |\n";
+       << " | " << (p.sweepable ? "yes" : "no") << " | " << (p.in_key ? "yes" : "no") << " | ";
+    if (!p.sql_column.empty()) md << "`" << p.sql_column << "`";
+    md << " | " << p.doc << models << " |\n";
   }
   return md.str();
 }

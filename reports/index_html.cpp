@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "engine/protocol/run_result.h"
+#include "orchestrator/campaign/store.h"
 #include "reports/number_format.h"
 
 namespace beverloo {
@@ -15,17 +17,6 @@ std::string html_escape(const std::string& s) {
 }
 
 std::string pm(double v, double e) { return format_with_error(v, e, " &plusmn; "); }
-
-// What a job's final state means (docs/sql-layout.md, `campaign status`).
-const char* state_meaning(const std::string& state) {
-  if (state == "done") return "finished; its result is stored (see the runs view's status for how it ended)";
-  if (state == "clogged") return "the flow stopped for good: no exit for run.clog_time";
-  if (state == "failed") return "every attempt failed (blow-up, I/O); see the attempts table";
-  if (state == "cancelled") return "cancelled by `beverloo campaign cancel`";
-  if (state == "running") return "an attempt is in flight";
-  if (state == "pending") return "not started yet";
-  return "";
-}
 
 void run_summary(std::ostringstream& html, db::Database& db) {
   db::Statement c = db.prepare("SELECT name, created_at FROM campaigns ORDER BY id DESC LIMIT 1");
@@ -40,7 +31,7 @@ void run_summary(std::ostringstream& html, db::Database& db) {
       "SELECT j.state, count(*) FROM jobs j JOIN campaign_jobs cj ON cj.job_key = j.key "
       "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) GROUP BY j.state ORDER BY j.state");
   while (s.step())
-    html << "<tr><td>" << s.get_text(0) << "</td><td>" << s.get_int(1) << "</td><td>" << state_meaning(s.get_text(0))
+    html << "<tr><td>" << s.get_text(0) << "</td><td>" << s.get_int(1) << "</td><td>" << job_state_meaning(s.get_text(0))
          << "</td></tr>\n";
   html << "</table>\n<table><tr><th>how finished runs ended</th><th>count</th><th>meaning</th></tr>\n";
   db::Statement st = db.prepare(
@@ -48,10 +39,7 @@ void run_summary(std::ostringstream& html, db::Database& db) {
       "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) GROUP BY 1 ORDER BY 1");
   while (st.step()) {
     const std::string status = st.get_text(0);
-    const char* meaning = status == "converged"    ? "Q reached run.target_rel_err"
-                          : status == "time_limit" ? "run.t_max came first: Q is stored with its (larger) error"
-                          : status == "clogged"    ? "the flow stopped: no exit for run.clog_time"
-                                                   : "";
+    const char* meaning = run_status_meaning(status);
     html << "<tr><td>" << html_escape(status) << "</td><td>" << st.get_int(1) << "</td><td>" << meaning << "</td></tr>\n";
   }
   html << "</table>\n<table><tr><th>failed attempts by class</th><th>count</th></tr>\n";
@@ -95,7 +83,13 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
   }
   html << "</table>\n<p><a href=\"beverloo_fits.csv\">CSV</a> &middot; <a href=\"beverloo_fits.md\">Markdown</a> "
           "(full precision)</p>\n";
-  html << "<h2>Crossover fits beta(lambda)</h2>\n<table><tr><th>group</th><th>points</th><th>lambda_c</th><th>b</th>"
+  html << "<h2>Crossover fits beta(lambda)</h2>\n";
+  if (fits.crossovers.empty()) {
+    html << "<p>Not made: needs Beverloo fits at several finite lambda = zeta/mu with the other parameters equal "
+            "(a sweep in lambda).</p>\n";
+    return;
+  }
+  html << "<table><tr><th>group</th><th>points</th><th>lambda_c</th><th>b</th>"
        << "<th>beta(lambda=0)</th><th>beta(lambda=inf)</th></tr>\n";
   for (const Crossover& g : fits.crossovers) {
     html << "<tr><td>" << html_escape(g.label) << "</td><td>" << g.finite.size() << "</td>";
@@ -115,7 +109,7 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
 std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures) {
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>beverloo report</title>\n"
+       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<link rel=\"icon\" href=\"data:,\">\n<title>beverloo report</title>\n"
        << "<style>body{font-family:sans-serif;max-width:1100px;margin:auto;padding:0 8px}"
        << "table{border-collapse:collapse;display:block;overflow-x:auto}"
        << "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}td:first-child{text-align:left}"

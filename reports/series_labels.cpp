@@ -75,7 +75,8 @@ void disambiguate_labels(std::vector<std::string>& labels, const std::vector<jso
     });
     for (std::size_t m = 0; m < members.size(); ++m)
       for (const std::string& p : differing)
-        labels[members[m]] += " " + dotted(p) + "=" + (flat[m].contains(p) ? value_text(flat[m][p]) : default_text(dotted(p)));
+        labels[members[m]].append(" ").append(dotted(p)).append("=").append(flat[m].contains(p) ? value_text(flat[m][p])
+                                                                                                : default_text(dotted(p)));
   }
 }
 

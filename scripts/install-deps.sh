@@ -17,6 +17,7 @@ PACKAGES=(
   bc procps                               # tests: timing arithmetic, pgrep/pkill
   gnuplot-nox                             # figures
   python3-h5py python3-numpy              # tests read result files the way users do (h5py)
+  chromium                                # tests open the report in a real headless browser
 )
 
 missing=()
@@ -36,7 +37,22 @@ fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "install-deps: installing ${missing[*]}"
+# apt's own output goes to a log; the terminal gets one line per step (and the log's end if a step fails)
+LOG=${BEVERLOO_INSTALL_LOG:-$(cd "$(dirname "$0")/.." && pwd)/build/install-deps.log}
+mkdir -p "$(dirname "$LOG")"
+: > "$LOG"
+step() {
+  local what=$1; shift
+  printf 'install-deps: %s ... ' "$what"
+  if "$@" >> "$LOG" 2>&1; then
+    echo ok
+  else
+    echo "FAILED (apt's output: $LOG)"
+    tail -n 20 "$LOG" >&2
+    exit 1
+  fi
+}
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+step "updating the package lists" $SUDO apt-get update
+step "installing ${#missing[@]} packages (${missing[*]})" $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
+echo "install-deps: done (apt's output: $LOG)"

@@ -252,9 +252,15 @@ void HopperRun<D>::report_progress(const FlowRateEstimate& e, bool force) {
   const double wall = std::chrono::duration<double>(now - session_start_).count();
   const double rate = wall > 0 ? (s_.step - session_first_step_) * double(s_.size()) / wall : 0;
   char line[256];
-  std::snprintf(line, sizeof line, "t = %.1f / %.0f  exits %lld  Q = %.4g +- %.2g (%.1f%%)  window %.0f-%.0f  %.3g particle-steps/s",
-                time(), c_.run.t_max, static_cast<long long>(rec_.exit_time.size()), e.Q, e.Q_err,
-                e.Q > 0 ? 100 * e.Q_err / e.Q : 0.0, e.t_start, e.t_end, rate);
+  // Q and the window only once the window is open and long enough for an error (before that
+  // the estimator's numbers are placeholders, and a window "80-40" would be nonsense)
+  if (e.valid && e.t_end > e.t_start)
+    std::snprintf(line, sizeof line, "t = %.1f / %.0f  exits %lld  Q = %.4g +- %.2g (%.1f%%)  window %.0f-%.0f  %.3g particle-steps/s",
+                  time(), c_.run.t_max, static_cast<long long>(rec_.exit_time.size()), e.Q, e.Q_err,
+                  e.Q > 0 ? 100 * e.Q_err / e.Q : 0.0, e.t_start, e.t_end, rate);
+  else
+    std::snprintf(line, sizeof line, "t = %.1f / %.0f  exits %lld  transient (no measurement window yet)  %.3g particle-steps/s",
+                  time(), c_.run.t_max, static_cast<long long>(rec_.exit_time.size()), rate);
   if (terminal)
     std::fprintf(stderr, "\r\033[K%s", line);
   else

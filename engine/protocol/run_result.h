@@ -9,6 +9,15 @@
 
 namespace beverloo {
 
+/// What a run's status means, in one phrase (report, `campaign status`, docs/database.md).
+inline const char* run_status_meaning(const std::string& status) {
+  if (status == "converged") return "Q reached run.target_rel_err";
+  if (status == "time_limit") return "run.t_max came first: Q is stored with its (larger) error";
+  if (status == "clogged") return "the flow stopped: no exit for run.clog_time (Q = 0)";
+  if (status == "interrupted") return "stopped by a signal; resumes from its checkpoint";
+  return "";
+}
+
 struct RunResult {
   // outcome
   std::string status;       ///< "converged" | "time_limit" | "clogged" | "interrupted"

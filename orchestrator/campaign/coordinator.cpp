@@ -116,7 +116,7 @@ class Coordinator {
     FailureClass cls = FailureClass::Lost;
     int status = -1;
     std::string message = "worker gone without an outcome (killed, or the coordinator died before it started)";
-    const std::optional<FailureClass> verdict = exit ? exit->verdict : std::nullopt;
+    const FailureClass* verdict = exit && exit->verdict ? &*exit->verdict : nullptr;  // (a pointer: GCC 12 warns falsely on an optional copy)
     if (!damaged.empty()) {
       cls = FailureClass::Io;
       status = outcome->exit_code;

@@ -90,6 +90,9 @@ class CampaignStore {
 };
 
 /// A fresh 128-bit random token (hex), the fencing value of an attempt.
+/// What a job's state means, in one phrase (report, `campaign status`, docs/database.md).
+const char* job_state_meaning(const std::string& state);
+
 std::string new_token();
 std::string host_name();
 

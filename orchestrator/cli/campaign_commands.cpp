@@ -14,6 +14,7 @@
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/campaign/coordinator.h"
 #include "orchestrator/executors/executor_factory.h"
+#include "engine/protocol/run_result.h"
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
@@ -114,6 +115,22 @@ int status_command(const std::string& dir) {
   std::printf("jobs         %lld: %lld done, %lld clogged, %lld failed, %lld cancelled, %lld running, %lld pending\n",
               (long long)c.total(), (long long)c.done, (long long)c.clogged, (long long)c.failed, (long long)c.cancelled,
               (long long)c.running, (long long)c.pending);
+  // what each state and each run ending present here means, once
+  const std::pair<const char*, std::int64_t> states[] = {{"done", c.done}, {"clogged", c.clogged}, {"failed", c.failed},
+                                                          {"cancelled", c.cancelled}, {"running", c.running}, {"pending", c.pending}};
+  for (const auto& [state, count] : states)
+    if (count > 0) std::printf("  %-10s %s\n", state, job_state_meaning(state));
+  db::Statement endings = db.prepare(
+      "SELECT r.status, count(*) FROM results r JOIN campaign_jobs cj ON cj.job_key = r.job_key "
+      "WHERE cj.campaign_id = ?1 GROUP BY 1 ORDER BY 1");
+  endings.bind(1, id);
+  bool first = true;
+  while (endings.step()) {
+    const std::string status = endings.get_text(0);
+    std::printf("%s %lld %s: %s\n", first ? "runs ended  " : "            ", (long long)endings.get_int(1), status.c_str(),
+                run_status_meaning(status));
+    first = false;
+  }
   db::Statement tp = db.prepare(
       "SELECT count(*), (julianday(max(a.ended_at)) - julianday(min(a.started_at))) * 86400, sum(r.wall_seconds) "
       "FROM attempts a JOIN results r ON r.attempt_id = a.id JOIN campaign_jobs cj ON cj.job_key = a.job_key "

@@ -53,7 +53,9 @@ TEST(ParameterTable, EveryRowIsReadAndWrittenByTheConfig) {
     EXPECT_TRUE(paths.insert(std::string(p.path)).second) << p.path << " twice";
     EXPECT_FALSE(p.doc.empty()) << p.path;
     EXPECT_FALSE(p.unit.empty()) << p.path;
-    if (p.omit_at_default) EXPECT_FALSE(p.sql_column.empty()) << p.path << ": a new parameter needs its SQL column";
+    if (p.omit_at_default) {
+      EXPECT_FALSE(p.sql_column.empty()) << p.path << ": a new parameter needs its SQL column";
+    }
   }
   for (const char* model : {"sp", "dp_smooth"}) {
     SimConfig c = SimConfig::from_json({{"model", model}, {"w", 4}, {"zeta", 0.1}, {"mu", 1}, {"mu_n", 0.5},

@@ -59,7 +59,9 @@ void check_split_friction_momentum_and_power(double mu_n, double mu_t, std::uint
       normal_power += -mu_n * vn * vn;
     }
   EXPECT_NEAR(power, expected, 1e-9 * std::fabs(expected));
-  if (mu_n == 0) EXPECT_EQ(normal_power, 0);
+  if (mu_n == 0) {
+    EXPECT_EQ(normal_power, 0);
+  }
   // and the combined contact pass reports the same power
   VecArray<D> fc(s.size(), Vec<D>::Zero());
   EXPECT_NEAR(ff.terms()[0]->accumulate(s, fc).power, expected, 1e-9 * std::fabs(expected));

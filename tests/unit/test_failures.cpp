@@ -18,7 +18,9 @@ TEST(FailureTable, EveryClassHasOneNameAndItsExitCodeMapsBack) {
     EXPECT_EQ(f.cls, c);
     EXPECT_TRUE(names.insert(std::string(f.name)).second) << f.name;
     EXPECT_EQ(failure_from_name(f.name), c);
-    if (f.exit_code >= 0) EXPECT_EQ(failure_from_exit(false, f.exit_code), c) << f.name;
+    if (f.exit_code >= 0) {
+      EXPECT_EQ(failure_from_exit(false, f.exit_code), c) << f.name;
+    }
   }
   EXPECT_EQ(failure_from_exit(true, 0), FailureClass::Killed);
   EXPECT_EQ(failure_from_exit(false, 99), FailureClass::Internal);

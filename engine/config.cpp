@@ -220,6 +220,20 @@ void SimConfig::resolve_and_validate() {
   }
   // rules that relate two fields
   require(w < W, "w", "must be smaller than the container width W = " + num(W) + ", got " + num(w));
+  require(drain.stop_below < N, "drain.stop_below", "must be smaller than N = " + std::to_string(N));
+  if (!reinject) {
+    require(run.trajectory_every_steps == 0, "run.trajectory_every_steps",
+            "a draining hopper writes no trajectory: particles leave it, and the H5MD frames hold a fixed number");
+    // the fit of dN/dt = -c0 sqrt(N) needs 3 blocks between the skipped ends (drain_fit.h)
+    const int steady = N - std::max(drain.stop_below, drain.fit_skip) - drain.fit_skip;
+    require(steady > 3 * drain.block_exits, "drain.fit_skip",
+            "a draining hopper of N = " + std::to_string(N) + " leaves " + std::to_string(std::max(steady, 0)) +
+                " steady exits after leaving out " + std::to_string(drain.fit_skip) + " at each end (and stopping at " +
+                std::to_string(drain.stop_below) + "); the fit needs more than 3 drain.block_exits = " +
+                std::to_string(3 * drain.block_exits) + ": raise N or lower drain.fit_skip");
+  }
+  require(theta_w_left_deg > 0 || theta_w_right_deg > 0, "theta_w_deg",
+          "at most one funnel wall may be vertical (0 degrees); both are 0, which leaves no floor");
   if (dimension == 3)
     require(theta_w_left_deg == 90 && theta_w_right_deg == 90, "theta_w_deg",
             "the 3D hopper has a flat base only (90 degrees), got " + num(theta_w_left_deg));
@@ -238,11 +252,17 @@ nlohmann::json SimConfig::to_json() const {
   for (const ParamSpec& p : job_parameters()) {
     const ParamAccess& a = p.access;
     if (!applies(p.models, model) || p.path == "theta_w_deg") continue;
+    // rows added after 0.2.0 are left out at their default (before their group is made, so that
+    // no empty group enters the canonical job either)
+    if (p.omit_at_default &&
+        ((p.type == ParamType::Real && a.real(self) == a.real(defaults)) ||
+         (p.type == ParamType::Integer && a.integer(self) == a.integer(defaults)) ||
+         (p.type == ParamType::Text && a.text(self) == a.text(defaults))))
+      continue;
     const auto [g, k] = split_path(p.path);
     json& obj = g.empty() ? j : j[g];
     switch (p.type) {
       case ParamType::Real:
-        if (p.omit_at_default && a.real(self) == a.real(defaults)) continue;
         obj[k] = a.real(self);
         break;
       case ParamType::OptionalReal:
@@ -253,7 +273,6 @@ nlohmann::json SimConfig::to_json() const {
       case ParamType::Integer64: obj[k] = a.integer64(self); break;
       case ParamType::Boolean: obj[k] = a.boolean(self); break;
       case ParamType::Text:
-        if (p.omit_at_default && a.text(self) == a.text(defaults)) continue;
         obj[k] = a.text(self);
         break;
       case ParamType::RealOrAuto:

@@ -55,6 +55,14 @@ struct ReinjectionParams {
   std::string rule = "pile";
 };
 
+/// A draining hopper (reinject = false, physics.md 9): when to stop and how dN/dt = -c0 sqrt(N)
+/// is fitted (engine/protocol/drain_fit.h).
+struct DrainParams {
+  int stop_below = 0;     ///< the run ends once at most this many particles remain in the hopper
+  int fit_skip = 100;     ///< exits left out at each end: the first n, and those with fewer than n left
+  int block_exits = 10;   ///< exits per rate block of the fit
+};
+
 /// Observables of physics.md section 7.
 struct ObservableParams {
   double sample_interval = 0.1;  ///< t0 between samples of profile, density and forces
@@ -126,6 +134,7 @@ struct SimConfig {
   FireParams fire;
   RunControls run;
   ReinjectionParams reinjection;
+  DrainParams drain;
   ObservableParams observables;
 
   /// Parse a job file. Unknown fields are errors (a typo must not silently become a default).

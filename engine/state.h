@@ -40,6 +40,25 @@ struct ParticleState {
     inv_mass.assign(n, 0.0);
     exited.assign(n, 0);
   }
+  /// Item `from` takes slot `to` (its old slot keeps a copy): with truncate, how a draining
+  /// hopper takes an item out in O(1) (swap the last into its place, drop the last).
+  void move(int from, int to) {
+    x[to] = x[from];
+    v[to] = v[from];
+    f[to] = f[from];
+    species[to] = species[from];
+    inv_mass[to] = inv_mass[from];
+    exited[to] = exited[from];
+  }
+  /// Keeps the first n items (n <= size()); no reallocation.
+  void truncate(int n) {
+    x.resize(n);
+    v.resize(n);
+    f.resize(n);
+    species.resize(n);
+    inv_mass.resize(n);
+    exited.resize(n);
+  }
   double sigma(int i) const { return sp.sigma[species[i]]; }
   double mass(int i) const { return sp.mass[species[i]]; }
   /// Kinetic energy sum M v^2 / 2.

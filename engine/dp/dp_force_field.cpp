@@ -54,6 +54,12 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   list_.set_extra_reach(&vertex_reach_);
 }
 
+void DpForceField::topology_changed() {
+  edge_bound_.assign(poly_.vertices(), kEdgeBoundFloor * shape_.l0[1]);
+  vertex_reach_.assign(poly_.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape_.l0[1] - reach_covered_));
+  list_.invalidate();
+}
+
 ForceReport DpForceField::compute(ParticleState<2>& s) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;

@@ -58,6 +58,9 @@ class DpForceField {
   /// Vertex "diameters" for the Verlet list: the contact diameters; the smooth contact adds
   /// each vertex's edge reach on top (NeighborList::set_extra_reach).
   static std::array<double, 2> list_diameters(const DpShape& shape);
+  /// The polygons changed (one taken out): the edge bounds start again from their floor and the
+  /// list is rebuilt (the list's contents never change a force sum, so no result depends on it).
+  void topology_changed();
 
  private:
   /// True (and the list invalidated) if some edge outgrew its bound.

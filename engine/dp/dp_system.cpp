@@ -42,7 +42,8 @@ void DpSystem::place_bodies(ParticleState<2>& bodies, Rng& rng) const {
   const double jitter = 0.01 * spacing;
   for (int i = 0; i < c_.N; ++i) {
     const int r = i / per_row, k = i % per_row;
-    const double x = -half + k * spacing + (r % 2 ? 0.5 * spacing : 0.0);
+    // (lateral_centre() is 0 unless a funnel wall is vertical: adding it changes no bit)
+    const double x = hopper_.lateral_centre() + (-half + k * spacing + (r % 2 ? 0.5 * spacing : 0.0));
     bodies.x[i] = Vec<2>(x + jitter * rng.uniform(-1, 1), bottom + r * row + jitter * rng.uniform(-1, 1));
     bodies.species[i] = species[i];
     bodies.inv_mass[i] = 1.0 / bodies.sp.mass[species[i]];
@@ -69,7 +70,7 @@ FireResult DpSystem::minimize(const FireParams& p, double dt) {
 
 void DpSystem::sync_bodies(ParticleState<2>& bodies) const {
   const double inv_nv = 1.0 / c_.dp.n_v;
-  for (int m = 0; m < c_.N; ++m) {
+  for (int m = 0; m < poly_.polygons(); ++m) {
     Vec<2> x = Vec<2>::Zero(), v = Vec<2>::Zero();
     for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) {
       x += verts_.x[i];
@@ -83,6 +84,19 @@ void DpSystem::sync_bodies(ParticleState<2>& bodies) const {
 void DpSystem::reinject(int m, const Vec<2>& centre, const Vec<2>& velocity, double angle) {
   place_regular_polygon(poly_, shape_, verts_, m, centre, angle, velocity);
   for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) ff_->list().relocate(i, verts_, hopper_);
+}
+
+void DpSystem::remove_polygon(int m) {
+  const int last = poly_.polygons() - 1, nv = shape_.n_v;
+  for (int k = 0; k < nv; ++k) verts_.move(poly_.first[last] + k, poly_.first[m] + k);
+  keep_polygons(last);
+}
+
+void DpSystem::keep_polygons(int n) {
+  verts_.truncate(n * shape_.n_v);
+  // the topology is uniform: rebuilt in place (the terms and the list hold references to it)
+  poly_ = PolygonSet::uniform(n, shape_.n_v);
+  ff_->topology_changed();
 }
 
 bool DpSystem::spot_is_free(int m, const Vec<2>& centre) const {
@@ -101,7 +115,7 @@ bool DpSystem::spot_is_free(int m, const Vec<2>& centre) const {
 
 void DpSystem::body_friction(VecArray<2>& out) {
   ff_->friction_forces(verts_, vertex_scratch_);
-  out.assign(c_.N, Vec<2>::Zero());
+  out.assign(poly_.polygons(), Vec<2>::Zero());
   for (int i = 0; i < verts_.size(); ++i) out[poly_.owner[i]] += vertex_scratch_[i];
 }
 

@@ -37,6 +37,10 @@ class DpSystem {
   void sync_bodies(ParticleState<2>& bodies) const;
   /// Polygon m becomes a regular reference polygon at `centre` moving with `velocity`.
   void reinject(int m, const Vec<2>& centre, const Vec<2>& velocity, double angle);
+  /// Takes polygon m out (a draining hopper): the last polygon's vertices take its place.
+  void remove_polygon(int m);
+  /// Keeps the first n polygons (a checkpoint of a draining hopper holds fewer than N).
+  void keep_polygons(int n);
   /// True if polygon m, placed at `centre` in any orientation, would touch no edge or vertex
   /// of another polygon. O(vertices); called for reinjection candidates only.
   bool spot_is_free(int m, const Vec<2>& centre) const;

@@ -3,11 +3,20 @@
 /// \brief Hopper containers. Every wall is a finite object queried by its nearest point, so the
 /// orifice edges are corners (a particle there feels the wall's end point, physics.md 2).
 ///
-/// 2D (Hopper<2>): gravity along -y, orifice from (-w/2, 0) to (w/2, 0). Walls:
-///   0 left funnel  segment (-w/2, 0) -> (-W/2, h_left),   h_left  = (W - w)/2 cot(theta_left)
-///   1 right funnel segment ( w/2, 0) -> ( W/2, h_right),  h_right = (W - w)/2 cot(theta_right)
-///   2 left side    ray from (-W/2, h_left) upward
-///   3 right side   ray from ( W/2, h_right) upward
+/// 2D (Hopper<2>): gravity along -y, orifice from (-w/2, 0) to (w/2, 0) (the orifice is the
+/// origin of the protocol: exits, the centre line, the corners). theta is measured from the
+/// direction of gravity (90: flat floor; 0: a vertical wall). Each funnel wall spans a
+/// horizontal run: (W - w)/2 each when neither wall is vertical (the container then lies
+/// symmetric about the orifice, from -W/2 to W/2); a vertical wall rises straight from its
+/// orifice edge and the other wall spans all of W - w, so the orifice sits in the container's
+/// corner (the experiments' 45/0 hopper). At most one wall may be vertical. Walls:
+///   0 left funnel  segment (-w/2, 0) -> (x_min, h_left),  h_left  = run_left cot(theta_left)
+///   1 right funnel segment ( w/2, 0) -> (x_max, h_right), h_right = run_right cot(theta_right)
+///   2 left side    ray from (x_min, h_left) upward
+///   3 right side   ray from (x_max, h_right) upward
+/// A vertical funnel wall is a ray from its orifice edge upward, and it is its side wall: the
+/// side wall's slot then holds no wall (its nearest point lies kFar away, so that the loops
+/// over walls need no special case).
 /// 3D (Hopper<3>): gravity along -z, cylinder of diameter W from z = 0 upward, flat base in the
 /// plane z = 0 with a circular orifice of diameter w on the axis. Walls: 0 base annulus,
 /// 1 cylinder mantle. Its bottom rim and the orifice rim are the corners.
@@ -41,9 +50,18 @@ class Hopper<2> {
   /// crossing a wall has been pierced by it (walls are lines without thickness, so a polygon
   /// may wrap around an orifice corner, but none of its edges may cut a wall).
   int funnel_wall_crossed(const Vec<2>& p, const Vec<2>& q) const;
-  /// Lateral extent available to a particle centre of radius r at height y >= funnel_top().
-  double half_width() const { return W_ / 2; }
+  /// The container's lateral extent above the funnel: x_min .. x_max (W wide), its centre
+  /// (0 unless a wall is vertical) and half its width.
+  double x_min() const { return x_min_; }
+  double x_max() const { return x_max_; }
+  double lateral_centre() const { return 0.5 * (x_min_ + x_max_); }
+  double half_width() const { return 0.5 * (x_max_ - x_min_); }
   double funnel_top() const { return std::max(h_left_, h_right_); }
+  /// False for the side wall of a vertical funnel wall (which is that side wall itself).
+  bool has_wall(int k) const { return seg_[k].length >= 0; }
+  /// Where an absent wall's "nearest point" lies: far beyond any interaction, finite (its
+  /// squared distance, ~1e300, stays below the largest double).
+  static constexpr double kFar = 1e150;
   double orifice_half_width() const { return w_ / 2; }
   /// Lateral distance of p from the orifice axis (|x|).
   static double lateral(const Vec<2>& p) { return std::fabs(p[0]); }
@@ -53,7 +71,7 @@ class Hopper<2> {
     Vec<2> a, u;
     double length;
   };
-  double W_, w_, h_left_, h_right_;
+  double W_, w_, h_left_, h_right_, x_min_, x_max_;
   Segment seg_[kNumWalls];
 };
 
@@ -77,6 +95,7 @@ class Hopper<3> {
   /// True inside the cylinder or below the base plane (no walls there; see the 2D hopper).
   bool contains(const Vec<3>& p) const { return p[2] < 0 || std::hypot(p[0], p[1]) < R_; }
   double half_width() const { return R_; }
+  double lateral_centre() const { return 0.0; }  ///< the axis
   double funnel_top() const { return 0.0; }
   double orifice_half_width() const { return r_orifice_; }
   static double lateral(const Vec<3>& p) { return std::hypot(p[0], p[1]); }

@@ -28,11 +28,12 @@ StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt, Hook&& b
     s.x[i] += dt * s.v[i] + half_dt2 * a;
     s.v[i] += half_dt * a;
   }
-  between_drift_and_force(s);
+  between_drift_and_force(s);  // may take items out (a draining hopper): count them again
   StepReport r;
   r.forces = ff.compute(s);
   double checksum = 0;  // NaN or inf anywhere poisons the sum: one add per component
-  for (int i = 0; i < n; ++i) {
+  const int n_after = s.size();
+  for (int i = 0; i < n_after; ++i) {
     s.v[i] += (half_dt * s.inv_mass[i]) * s.f[i];
     checksum += s.x[i].sum() + s.v[i].sum();
   }

@@ -58,16 +58,20 @@ void HopperRun<D>::load_checkpoint(const std::string& source) {
   if (job != c_.to_json().dump())
     throw ConfigError("job", "differs from the job of the checkpoint " + source + "; refusing to resume a different job");
   s_.sp = model_->body_species();
-  s_.resize(c_.N);
   H5Handle p = h5::open_group(f, "particles");
+  // a draining hopper's checkpoint holds the particles still in it (1 .. N)
+  const int n = static_cast<int>(h5::read_uint8(p, "species").size());
+  if (n < 1 || n > c_.N || (c_.reinject && n != c_.N))
+    throw IoError("checkpoint: " + std::to_string(n) + " particles where the job has N = " + std::to_string(c_.N));
+  s_.resize(n);
   unflatten<D>(h5::read_doubles(p, "x"), s_.x, "x");
   unflatten<D>(h5::read_doubles(p, "v"), s_.v, "v");
   unflatten<D>(h5::read_doubles(p, "f"), s_.f, "f");
   s_.species = h5::read_uint8(p, "species");
   s_.exited = h5::read_uint8(p, "exited");
-  if (static_cast<int>(s_.species.size()) != c_.N || static_cast<int>(s_.exited.size()) != c_.N)
+  if (static_cast<int>(s_.species.size()) != n || static_cast<int>(s_.exited.size()) != n)
     throw IoError("checkpoint: particle arrays have the wrong size");
-  for (int i = 0; i < c_.N; ++i) s_.inv_mass[i] = 1.0 / s_.sp.mass[s_.species[i]];
+  for (int i = 0; i < n; ++i) s_.inv_mass[i] = 1.0 / s_.sp.mass[s_.species[i]];
   model_->load_checkpoint(f, s_);
   s_.step = h5::attr_int64(f, "step");
   const auto st = h5::read_uint64(f, "rng_state");

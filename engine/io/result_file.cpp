@@ -65,6 +65,24 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
       h5::write(g, "size", r.exit_size);
       h5::write(g, "particle", r.exit_particle);
     }
+    if (r.draining) {  // only then: a continuous run's file keeps its layout
+      H5Handle g = h5::create_group(f, "drain");
+      h5::attr(g, "n_initial", std::int64_t{r.n_initial});
+      h5::attr(g, "n_remaining", std::int64_t{r.n_remaining});
+      h5::attr(g, "fit_ok", std::int64_t{r.drain.ok});
+      h5::attr(g, "fit_message", r.drain.message);
+      h5::attr(g, "c0", r.drain.c0);
+      h5::attr(g, "c0_err", r.drain.c0_err);
+      h5::attr(g, "chi2_red", r.drain.chi2_red);
+      h5::attr(g, "exits_used", std::int64_t{r.drain.exits_used});
+      // N(t): the hopper's count just after each exit, and the fitted blocks
+      std::vector<double> n_after(r.exit_time.size());
+      for (std::size_t k = 0; k < n_after.size(); ++k) n_after[k] = double(r.n_initial) - double(k) - 1;
+      h5::write(g, "N_after_exit", n_after);
+      h5::write(g, "block_N", r.drain.block_N);
+      h5::write(g, "block_rate", r.drain.block_rate);
+      h5::write(g, "block_rate_err", r.drain.block_rate_err);
+    }
     {
       H5Handle g = h5::create_group(f, "rate");
       h5::attr(g, "bin_width", r.rate_bin);

@@ -100,6 +100,7 @@ void DpModel::save_checkpoint(hid_t file) const {
 }
 
 void DpModel::load_checkpoint(hid_t file, ParticleState<2>& bodies) {
+  dp_.keep_polygons(bodies.size());  // a draining hopper's checkpoint holds fewer than N
   ParticleState<2>& vs = dp_.verts();
   const PolygonSet& poly = dp_.polygons();
   for (int i = 0; i < vs.size(); ++i) {

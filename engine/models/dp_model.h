@@ -26,6 +26,13 @@ class DpModel final : public HopperModel<2> {
   StepReport step(ParticleState<2>& bodies, double dt, StepHook<2>& hook) override;
   void check_step(const StepReport& r, double t, double max_overlap) const override;
   void reinjected(int i, ParticleState<2>& bodies, Rng& rng) override;
+  void remove_body(int i, ParticleState<2>& bodies) override {
+    dp_.remove_polygon(i);
+    const int last = bodies.size() - 1;
+    bodies.move(last, i);
+    bodies.truncate(last);
+    bodies_list_.invalidate();
+  }
   void body_friction(const ParticleState<2>&, VecArray<2>& out) override { dp_.body_friction(out); }
   void check_containment(double t) const override { dp_.check_vertices(t); }
   std::function<bool(int, const Vec<2>&)> spot_test() override {

@@ -55,6 +55,10 @@ class HopperModel {
   virtual void check_step(const StepReport& r, double t, double max_overlap) const = 0;
   /// Body i was just placed (position, velocity) by the reinjection: rebuild what hangs on it.
   virtual void reinjected(int i, ParticleState<D>& bodies, Rng& rng) = 0;
+  /// Takes body i out of the simulation (a draining hopper): the last body takes its place,
+  /// with everything that hangs on it (DP: its polygon's vertices); the lists are rebuilt.
+  /// Called between drift and force, so that the step's forces miss the body.
+  virtual void remove_body(int i, ParticleState<D>& bodies) = 0;
   /// Friction force on each body (for the |F^mu| observable).
   virtual void body_friction(const ParticleState<D>& bodies, VecArray<D>& out) = 0;
   /// Model-specific containment (DP: vertices, edges); throws InstabilityError.

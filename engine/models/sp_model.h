@@ -24,6 +24,12 @@ class SpModel final : public HopperModel<D> {
   StepReport step(ParticleState<D>& bodies, double dt, StepHook<D>& hook) override;
   void check_step(const StepReport& r, double t, double max_overlap) const override;
   void reinjected(int, ParticleState<D>&, Rng&) override {}
+  void remove_body(int i, ParticleState<D>& bodies) override {
+    const int last = bodies.size() - 1;
+    bodies.move(last, i);
+    bodies.truncate(last);
+    ff_.list().invalidate();
+  }
   void body_friction(const ParticleState<D>& bodies, VecArray<D>& out) override { ff_.contact().friction_forces(bodies, out); }
   void check_containment(double) const override {}
   std::int64_t moving_points(const ParticleState<D>& bodies) const override { return bodies.size(); }

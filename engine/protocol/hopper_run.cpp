@@ -16,6 +16,7 @@
 #include "../units.h"
 #include "../models/dp_model.h"
 #include "../models/sp_model.h"
+#include "drain_fit.h"
 #include "placement.h"
 
 namespace beverloo {
@@ -150,7 +151,15 @@ void HopperRun<D>::reinject_exited(NeighborList<D>& list) {
 template <int D>
 void HopperRun<D>::between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list) {
   exits_.update(bodies, step_t_next_, rec_);
-  if (c_.reinject && !exits_.to_reinject().empty()) reinject_exited(body_list);
+  if (exits_.to_reinject().empty()) return;
+  if (c_.reinject) {
+    reinject_exited(body_list);
+  } else {
+    // a draining hopper: a particle that has fallen the drop depth below the orifice leaves the
+    // simulation; from the highest index down, so that the swapped-in last ones are still to come
+    const std::vector<int>& gone = exits_.to_reinject();
+    for (auto it = gone.rbegin(); it != gone.rend(); ++it) model_->remove_body(*it, bodies);
+  }
 }
 
 template <int D>
@@ -206,11 +215,18 @@ RunResult HopperRun<D>::run() {
       est = estimator_.estimate(rec_, t);
       return finish("clogged", "no particle exited for t_clog = " + std::to_string(c_.run.t_clog), est);
     }
+    if (!c_.reinject && c_.N - static_cast<std::int64_t>(rec_.exit_time.size()) <= c_.drain.stop_below) {
+      est = estimator_.estimate(rec_, t);
+      return finish("drained", "at most drain.stop_below = " + std::to_string(c_.drain.stop_below) +
+                                   " particles remain in the hopper", est);
+    }
     if (step % check_steps == 0) {
       if (opt_.progress_step) opt_.progress_step->store(step, std::memory_order_relaxed);
       est = estimator_.estimate(rec_, t);
       report_progress(est, false);
-      if (est.valid && est.t_end - est.t_start >= c_.run.min_window && est.rel_err() <= c_.run.target_rel_err)
+      // a draining hopper has no steady state to converge to: it runs until it has drained
+      if (c_.reinject && est.valid && est.t_end - est.t_start >= c_.run.min_window &&
+          est.rel_err() <= c_.run.target_rel_err)
         return finish("converged", "relative error of Q reached run.target_rel_err", est);
     }
     if (step >= max_steps) {
@@ -281,11 +297,28 @@ RunResult HopperRun<D>::finish(const std::string& status, const std::string& rea
   // A clogged run has Q = 0 (physics.md 7); its pre-clog rate stays visible in the rate series.
   r.Q = r.clogged ? 0 : e.Q;
   r.Q_err = r.clogged ? 0 : e.Q_err;
-  r.Q_rel_err = (r.Q > 0) ? r.Q_err / r.Q : 0;
   r.window_start = e.t_start;
   r.window_end = e.t_end;
   r.exits_in_window = e.exits_in_window;
   r.exits_total = static_cast<std::int64_t>(rec_.exit_time.size());
+  if (!c_.reinject) {
+    // a draining hopper: Q is c0 (per t0) of dN/dt = -c0 sqrt(N) over the steady exits; a fit
+    // without enough exits leaves Q = 0 (not a flowing point) and says why
+    r.draining = true;
+    r.n_initial = c_.N;
+    r.n_remaining = c_.N - static_cast<int>(r.exits_total);
+    r.drain = fit_drain(rec_.exit_time, c_.N, c_.drain.fit_skip, c_.drain.block_exits);
+    r.Q = !r.clogged && r.drain.ok ? r.drain.c0 : 0;
+    r.Q_err = !r.clogged && r.drain.ok ? r.drain.c0_err : 0;
+    if (r.drain.ok) {
+      r.window_start = r.drain.t_first;
+      r.window_end = r.drain.t_last;
+      r.exits_in_window = r.drain.exits_used;
+    } else {
+      r.stop_reason += "; no fit: " + r.drain.message;
+    }
+  }
+  r.Q_rel_err = (r.Q > 0) ? r.Q_err / r.Q : 0;
   const ObservableSummary o = obs_.summarize(e.t_start);
   r.rho_n = o.rho_n;
   r.rho_n_err = o.rho_n_err;

@@ -23,7 +23,8 @@ void place_randomly(ParticleState<D>& s, const SimConfig& c, const Hopper<D>& ho
   for (int i = 0; i < c.N; ++i) {
     Vec<D> p;
     if constexpr (D == 2) {
-      p[0] = rng.uniform(-half, half);
+      // about the container's centre (0 unless a funnel wall is vertical: adding it changes no bit)
+      p[0] = hopper.lateral_centre() + rng.uniform(-half, half);
     } else {
       double px, py;  // uniform in the disk by rejection: the count of draws is deterministic
       do {

@@ -67,6 +67,7 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
     do {
       for (int d = 0; d < D - 1; ++d) p[d] = rng.uniform(-half, half);
     } while (Hopper<D>::lateral(p) >= half);
+    p[0] += hopper_.lateral_centre();  // 0 unless a funnel wall is vertical (2D): no bit changes
     double column_top = hopper_.funnel_top() + ri;
     int below = -1;
     for (int k = 0; k < n; ++k) {
@@ -117,7 +118,9 @@ bool Reinjector<D>::reinject_in_lane(ParticleState<D>& s, int i, std::int64_t pl
   const double small = s.sp.sigma[0];
   const int k_lane = static_cast<int>(placement % lanes(s));
   // 0, -1, +1, -2, +2, ... lane spacings from the axis (the code's round((k + 1e-4) / 2) * (-1)^k)
-  const double offset = std::round((k_lane + 1e-4) / 2.0) * (k_lane % 2 ? -1.0 : 1.0) * lanes::kSpacing * small;
+  // (about the container's centre: 0 unless a funnel wall is vertical, then no bit changes)
+  const double offset = hopper_.lateral_centre() +
+                        std::round((k_lane + 1e-4) / 2.0) * (k_lane % 2 ? -1.0 : 1.0) * lanes::kSpacing * small;
   const int n = s.size();
   auto in_lane = [&](int k) {
     return k != i && !s.exited[k] && std::fabs(s.x[k][0] - offset) < lanes::kHalfWindow * small;

@@ -2,7 +2,7 @@
 
 namespace beverloo {
 
-nlohmann::json RunResult::summary_json() const {
+nlohmann::json RunResult::flow_summary_json() const {
   return {{"status", status},
           {"stop_reason", stop_reason},
           {"Q", Q},
@@ -35,6 +35,15 @@ nlohmann::json RunResult::summary_json() const {
           {"wall_seconds", wall_seconds},
           {"particle_steps_per_second", particle_steps_per_second},
           {"resumed_times", resumed_times}};
+}
+
+nlohmann::json RunResult::summary_json() const {
+  nlohmann::json j = flow_summary_json();
+  if (draining)  // only then: a continuous run's summary stays as it was
+    j["drain"] = {{"n_initial", n_initial}, {"n_remaining", n_remaining}, {"fit_ok", drain.ok},
+                  {"fit_message", drain.message}, {"c0", drain.c0}, {"c0_err", drain.c0_err},
+                  {"chi2_red", drain.chi2_red}, {"blocks", drain.blocks}, {"exits_used", drain.exits_used}};
+  return j;
 }
 
 }  // namespace beverloo

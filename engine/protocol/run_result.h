@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drain_fit.h"
+
 namespace beverloo {
 
 /// What a run's status means, in one phrase (report, `campaign status`, docs/database.md).
@@ -15,6 +17,7 @@ inline const char* run_status_meaning(const std::string& status) {
   if (status == "time_limit") return "run.t_max came first: Q is stored with its (larger) error";
   if (status == "clogged") return "the flow stopped: no exit for run.clog_time (Q = 0)";
   if (status == "interrupted") return "stopped by a signal; resumes from its checkpoint";
+  if (status == "drained") return "a draining hopper emptied to drain.stop_below; Q is c0 t0 of dN/dt = -c0 sqrt(N)";
   return "";
 }
 
@@ -33,6 +36,11 @@ struct RunResult {
   double rho_n = 0, rho_n_err = 0, a_eff = 0, Q_prime = 0, Q_prime_err = 0;
   // dissipation forces
   double mean_F_drag = 0, mean_F_friction = 0, force_ratio = 0;  ///< ratio = drag / friction
+  // a draining hopper (reinject = false): Q and Q_err are c0 and its error (per t0) of the fit
+  // dN/dt = -c0 sqrt(N), the window the span of its blocks
+  bool draining = false;
+  int n_initial = 0, n_remaining = 0;  ///< particles in the hopper at t = 0 and at the end
+  DrainFit drain;
   // series
   std::vector<double> profile_h, profile_v_g, profile_v_g_err;
   double rate_bin = 0;
@@ -55,6 +63,9 @@ struct RunResult {
 
   /// The scalar part (no long series) for summary.json and the campaign database.
   nlohmann::json summary_json() const;
+
+ private:
+  nlohmann::json flow_summary_json() const;
 };
 
 }  // namespace beverloo

@@ -79,6 +79,30 @@ TEST(ForceTerms, GradientMatchesEnergy2DSlantedAsymmetricFunnel) {
   EXPECT_EQ(with_energy, 3);
 }
 
+TEST(ForceTerms, GradientMatchesEnergy2DWithAVerticalWall) {
+  // The experiments' 45/0 hopper, both ways round: the vertical wall is a ray from its orifice
+  // edge (the corner) up, and it is the container's side; the slanted wall spans W - w.
+  for (const bool right_vertical : {true, false}) {
+    SimConfig c = small_config(2, 60, 2.5);
+    c.theta_w_left_deg = right_vertical ? 45 : 0;
+    c.theta_w_right_deg = right_vertical ? 0 : 45;
+    c.resolve_and_validate();
+    const Hopper<2> h = hopper_for<2>(c);
+    ParticleState<2> s = random_state<2>(c, h, 14);
+    const double sign = right_vertical ? 1 : -1;  // the vertical wall's side
+    for (int k = 0; k < 5; ++k) {
+      const double y = 0.4 + 1.1 * k;
+      s.x[k] = Vec<2>(sign * (1.25 - 0.3), y);                   // against the vertical wall
+      s.x[5 + k] = Vec<2>(-sign * (1.25 + y - 0.25), y + 0.05);  // on the 45-degree wall
+    }
+    s.x[10] = Vec<2>(sign * (1.25 - 0.2), 0.1);   // at the vertical wall's corner, inside the orifice
+    s.x[11] = Vec<2>(sign * (1.25 + 0.2), -0.2);  // below the corner after exiting
+    int with_energy = 0;
+    check_gradients<2>(c, s, &with_energy);
+    EXPECT_EQ(with_energy, 3) << (right_vertical ? "45/0" : "0/45");
+  }
+}
+
 TEST(ForceTerms, GradientAtOrificeCorner2D) {
   // Particles whose nearest wall point is the end point of a funnel segment (the orifice
   // edge): above it, beside it inside the orifice, and below it after exiting.

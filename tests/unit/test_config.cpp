@@ -60,7 +60,7 @@ TEST(Config, ErrorsNameTheField) {
       {{{"N", 1}}, "N"},
       {{{"N", 10.5}}, "N"},
       {{{"theta_w_deg", 95}}, "theta_w_left_deg"},
-      {{{"theta_w_left_deg", 0}}, "theta_w_left_deg"},
+      {{{"theta_w_left_deg", -5}}, "theta_w_left_deg"},
       {{{"model", "dpm"}}, "model"},
       {{{"model", "dp_smooth"}, {"dimension", 3}}, "dimension"},
       {{{"model", "dp_smooth"}, {"E_sp", 100}}, "E_sp"},

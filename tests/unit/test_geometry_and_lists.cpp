@@ -37,6 +37,50 @@ TEST(Hopper2D, OrificeEdgesAreCorners) {
   EXPECT_FALSE(funnel.contains(Vec<2>(4.5, 1)));  // outside the 45 degree wall
 }
 
+TEST(Hopper2D, AVerticalWallPutsTheOrificeInTheContainersCorner) {
+  // 45/0 (the experiments' second hopper): W = 50, w = 6; the right wall rises straight from the
+  // orifice's right edge, the left wall spans W - w = 44 at 45 degrees up to height 44
+  const Hopper<2> h(50, 6, units::deg_to_rad(45), 0);
+  EXPECT_DOUBLE_EQ(h.x_min(), -47);
+  EXPECT_DOUBLE_EQ(h.x_max(), 3);
+  EXPECT_DOUBLE_EQ(h.lateral_centre(), -22);
+  EXPECT_DOUBLE_EQ(h.half_width(), 25);
+  EXPECT_NEAR(h.funnel_top(), 44, 1e-12);
+  EXPECT_TRUE(h.has_wall(0) && h.has_wall(1) && h.has_wall(2));
+  EXPECT_FALSE(h.has_wall(3));  // the vertical funnel wall is the right side
+  // the vertical wall: nearest point level with p, its lower end the orifice corner
+  EXPECT_EQ(h.nearest_point(1, Vec<2>(2.5, 30)), Vec<2>(3, 30));
+  EXPECT_EQ(h.nearest_point(1, Vec<2>(2.5, -0.5)), Vec<2>(3, 0));
+  // the absent wall is far beyond any contact, with a finite distance
+  const double d2 = (Vec<2>(2.5, 30) - h.nearest_point(3, Vec<2>(2.5, 30))).squaredNorm();
+  EXPECT_GT(d2, 1e290);
+  EXPECT_TRUE(std::isfinite(d2));
+  // the slanted wall ends on the left side at height 44
+  EXPECT_NEAR(h.nearest_point(2, Vec<2>(-47, -10))[1], 44, 1e-12);
+  EXPECT_TRUE(h.contains(Vec<2>(0, 1)));
+  EXPECT_TRUE(h.contains(Vec<2>(-20, 30)));
+  EXPECT_FALSE(h.contains(Vec<2>(-20, 10)));  // below the 45-degree wall (at x = -20 it is at y = 17)
+  EXPECT_FALSE(h.contains(Vec<2>(3.5, 10)));  // beyond the vertical wall
+  EXPECT_FALSE(h.contains(Vec<2>(-47.5, 60)));
+  // mirrored: 0/45
+  const Hopper<2> m(50, 6, 0, units::deg_to_rad(45));
+  EXPECT_DOUBLE_EQ(m.x_min(), -3);
+  EXPECT_DOUBLE_EQ(m.x_max(), 47);
+  EXPECT_FALSE(m.has_wall(2));
+  EXPECT_EQ(m.nearest_point(0, Vec<2>(-2.5, 30)), Vec<2>(-3, 30));
+  // a polygon edge cutting the vertical wall inside the funnel is caught
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(2, 5), Vec<2>(4, 5)), 1);
+  EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(1, 5), Vec<2>(2, 5)), -1);
+}
+
+TEST(Hopper2D, SymmetricWallsKeepTheContainerCentredOnTheOrifice) {
+  const Hopper<2> h(50, 6, units::deg_to_rad(60), units::deg_to_rad(30));
+  EXPECT_EQ(h.x_min(), -25);
+  EXPECT_EQ(h.x_max(), 25);
+  EXPECT_EQ(h.lateral_centre(), 0);
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(h.has_wall(k));
+}
+
 TEST(Hopper2D, SegmentsCuttingAFunnelWall) {
   const Hopper<2> h(50, 6, units::pi / 2, units::pi / 2);
   EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(2.5, 0.5), Vec<2>(2.5, -0.5)), -1);  // through the orifice

@@ -31,9 +31,16 @@ SimConfig read_job(const std::string& path) { return SimConfig::from_json(read_j
 
 void print_summary(const RunResult& r, const SimConfig& c) {
   std::printf("status        %s (%s)\n", r.status.c_str(), r.stop_reason.c_str());
-  std::printf("Q             %.6g +- %.3g (%.2f%%)  [sigma_avg^%d / t0]\n", r.Q, r.Q_err, 100 * r.Q_rel_err, c.dimension);
-  std::printf("window        %.1f .. %.1f t0, %lld exits in window, %lld in all\n", r.window_start, r.window_end,
-              static_cast<long long>(r.exits_in_window), static_cast<long long>(r.exits_total));
+  if (r.draining) {
+    std::printf("Q = c0 t0     %.6g +- %.3g (%.2f%%)  [dN/dt = -c0 sqrt(N); c0 per t0]\n", r.Q, r.Q_err, 100 * r.Q_rel_err);
+    std::printf("drain         %d -> %d particles; fit over %d exits in %d blocks (%.1f .. %.1f t0), chi2_red %.2f%s%s\n",
+                r.n_initial, r.n_remaining, r.drain.exits_used, r.drain.blocks, r.window_start, r.window_end,
+                r.drain.chi2_red, r.drain.ok ? "" : "; no fit: ", r.drain.message.c_str());
+  } else {
+    std::printf("Q             %.6g +- %.3g (%.2f%%)  [sigma_avg^%d / t0]\n", r.Q, r.Q_err, 100 * r.Q_rel_err, c.dimension);
+    std::printf("window        %.1f .. %.1f t0, %lld exits in window, %lld in all\n", r.window_start, r.window_end,
+                static_cast<long long>(r.exits_in_window), static_cast<long long>(r.exits_total));
+  }
   if (r.clogged) std::printf("clog          last exit at t = %.1f, detected at t = %.1f\n", r.clog_time, r.clog_detected_time);
   std::printf("rho_n         %.4g +- %.2g   Q' = %.6g\n", r.rho_n, r.rho_n_err, r.Q_prime);
   std::printf("|F_drag|      %.4g   |F_friction| %.4g   ratio %.4g\n", r.mean_F_drag, r.mean_F_friction, r.force_ratio);

@@ -133,6 +133,8 @@ CampaignFits fit_campaign(db::Database& db) {
       label << ")";
       if (s.theta_left != 90 || s.theta_right != 90) label << " theta=" << fmt(s.theta_left) << "/" << fmt(s.theta_right);
       label << " N=" << s.N;
+      s.drain = !job.value("reinject", true);
+      if (s.drain) label << " draining (Q = c0 t0)";
       s.label = label.str();
       index[key] = out.series.size();
       out.series.push_back(s);
@@ -185,7 +187,7 @@ CampaignFits fit_campaign(db::Database& db) {
   // crossover groups: series sharing everything but zeta/mu, with the same drag for finite lambda
   std::map<std::string, Crossover> groups;
   for (const Series& s : out.series) {
-    if (!(s.zeta > 0) || s.drag_rate > 0) continue;  // lambda = 0 joins below as a limit
+    if (!(s.zeta > 0) || s.drag_rate > 0 || s.drain) continue;  // lambda = 0 joins below as a limit
     std::string gkey = s.base_key + "|zeta=" + fmt(s.zeta, 12);
     if (s.mu_n) gkey += "|mu_n=" + fmt(*s.mu_n, 12);  // (absent for the text's model: keys as before)
     if (s.mu_t) gkey += "|mu_t=" + fmt(*s.mu_t, 12);
@@ -214,7 +216,7 @@ CampaignFits fit_campaign(db::Database& db) {
   // rate-drag series without friction (lambda = inf).
   std::map<std::string, Crossover> by_friction;
   for (const Series& s : out.series) {
-    if (!(s.drag_rate > 0) || s.zeta != 0 || !(s.mu > 0)) continue;
+    if (!(s.drag_rate > 0) || s.zeta != 0 || !(s.mu > 0) || s.drain) continue;
     const std::string gkey = s.base_key + "|mu=" + fmt(s.mu, 12) + "|mu_n=" + (s.mu_n ? fmt(*s.mu_n, 12) : "mu") +
                              "|mu_t=" + (s.mu_t ? fmt(*s.mu_t, 12) : "mu");
     Crossover& g = by_friction[gkey];
@@ -247,12 +249,17 @@ CampaignFits fit_campaign(db::Database& db) {
   }
   disambiguate_labels(labels, bases);
   for (std::size_t i = 0; i < labels.size(); ++i) out.crossovers[i].label = labels[i];
+  add_experiment_series(db, out);
   return out;
 }
 
 void store_fits(db::Database& db, const CampaignFits& fits) {
   db::Transaction tx(db);
-  db.exec("DELETE FROM series_points; DELETE FROM beverloo_fit_results; DELETE FROM crossover_fit_results;");
+  db.exec("DELETE FROM series_points; DELETE FROM beverloo_fit_results; DELETE FROM crossover_fit_results; "
+          "DELETE FROM experiment_fit_results;");
+  db::Statement ex = db.prepare(
+      "INSERT INTO experiment_fit_results (series_id, label, points, C, C_err, k, k_err, beta, beta_err, chi2_red, message) "
+      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
   db::Statement ins = db.prepare(
       "INSERT INTO beverloo_fit_results (series_key, label, dimension, N, E_sp, zeta, mu, lambda, theta_w_left_deg, "
       "theta_w_right_deg, points, clogged_points, C, C_err, k, k_err, beta, beta_err, chi2_red, message, model, n_v, "
@@ -263,6 +270,18 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
   for (const Series& s : fits.series) {
     int flowing = 0;
     for (const auto& p : s.points) flowing += p.flowing();
+    if (!s.provenance.empty()) {  // an imported series: its own table (no job parameters)
+      ex.bind(1, s.experiment_id).bind(2, s.label).bind(3, flowing);
+      if (s.fit)
+        ex.bind(4, s.fit->C).bind(5, s.fit->C_err).bind(6, s.fit->k).bind(7, s.fit->k_err).bind(8, s.fit->beta)
+            .bind(9, s.fit->beta_err).bind(10, s.fit->chi2_red).bind_null(11);
+      else {
+        for (int c = 4; c <= 10; ++c) ex.bind_null(c);
+        ex.bind(11, s.message);
+      }
+      ex.run();
+      continue;
+    }
     auto real_or_null = [&](int col, double v) {
       if (std::isnan(v)) ins.bind_null(col); else ins.bind(col, v);
     };

@@ -25,7 +25,7 @@ struct SeriesPoint {
 
 struct Series {
   std::string key, label, base_key;  ///< base_key: without zeta and mu (finds the lambda limits)
-  std::string model = "sp";          ///< sp, dp_smooth, dp_rough
+  std::string model = "sp";          ///< sp, dp_smooth, dp_rough; "experiment" for an imported series
   std::string stiffness;             ///< the model's stiffness parameters, e.g. "SP E_sp=100"
   int dimension = 2, N = 0;
   int n_v = 0;                       ///< DP only (0 for SP)
@@ -34,7 +34,13 @@ struct Series {
   double zeta = 0, mu = 0, lambda = 0, theta_left = 90, theta_right = 90;
   double drag_rate = 0;                  ///< the authors' drag form (0: none)
   std::optional<double> mu_n, mu_t;      ///< a friction split, when the job has one
-  bool is_dp() const { return model != "sp"; }
+  bool drain = false;                ///< simulated draining hopper (reinject = false): Q is c0 t0
+  std::string provenance;            ///< an imported series: "measured" or "simulated" (else empty)
+  std::int64_t experiment_id = 0;    ///< its experiment_series.id
+  bool is_dp() const { return model == "dp_smooth" || model == "dp_rough"; }
+  /// Q is a draining hopper's c0 t0 (docs/experiments.md), not a continuous flow rate: such
+  /// series have their own figures and no crossover.
+  bool rate_is_c0() const { return drain || !provenance.empty(); }
   std::vector<SeriesPoint> points;  ///< sorted by w
   std::vector<std::string> job_keys;
   std::optional<BeverlooFit> fit;
@@ -62,8 +68,12 @@ struct CampaignFits {
   std::vector<Crossover> crossovers;
 };
 
-/// Reads the latest campaign of the database and fits it. Never throws for unfittable data.
+/// Reads the latest campaign of the database and its experiment series, and fits them. Never
+/// throws for unfittable data.
 CampaignFits fit_campaign(db::Database& db);
+/// The imported experiment series (reports/experiment_series.cpp), appended and fitted.
+void add_experiment_series(db::Database& db, CampaignFits& out);
+
 /// Replaces the fit tables in one transaction.
 void store_fits(db::Database& db, const CampaignFits& fits);
 /// beverloo_fits.{csv,md} and crossover_fits.{csv,md} in dir.

@@ -67,6 +67,30 @@ CompletedRun read_completed(const std::string& dir, const SimConfig& c) {
   return out;
 }
 
+DrainRecord read_drain(const std::string& dir) {
+  const fs::path result = fs::path(dir) / kResult;
+  if (!fs::is_regular_file(result)) throw IoError(dir + ": no " + kResult);
+  DrainRecord d;
+  try {
+    H5Handle f = h5::open_file(result.string());
+    H5Handle p = h5::open_group(f, "parameters");
+    d.job_json = h5::attr_string(p, "job_json");
+    const nlohmann::json job = nlohmann::json::parse(d.job_json);
+    if (job.value("reinject", true))
+      throw ConfigError(dir, "is not a draining hopper's result (its job has reinject = true)");
+    d.w = job.at("w").get<double>();
+    H5Handle g = h5::open_group(f, "drain");
+    d.n_initial = static_cast<int>(h5::attr_int64(g, "n_initial"));
+    H5Handle e = h5::open_group(f, "exits");
+    d.exit_time = h5::read_doubles(e, "time");
+  } catch (const ConfigError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw IoError(result.string() + ": unreadable: " + e.what());
+  }
+  return d;
+}
+
 void remove_result(const std::string& dir) {
   for (const char* name : {kResult, kSummary, kFailure}) {
     std::error_code ec;

@@ -40,6 +40,17 @@ struct CompletedRun {
 /// Reads a Complete result; throws IoError naming what is damaged otherwise.
 CompletedRun read_completed(const std::string& dir, const SimConfig& c);
 
+/// A finished draining run's exits (reinject = false), for `beverloo experiment export-drain`.
+struct DrainRecord {
+  std::string job_json;           ///< the canonical job
+  double w = 0;                   ///< orifice width, sigma_avg
+  int n_initial = 0;
+  std::vector<double> exit_time;  ///< t0, sorted
+};
+/// Reads dir's result; throws IoError if it is missing or damaged, ConfigError if the run was
+/// not a draining hopper.
+DrainRecord read_drain(const std::string& dir);
+
 /// Removes the engine's result files (not the checkpoint): a damaged result is run again.
 void remove_result(const std::string& dir);
 

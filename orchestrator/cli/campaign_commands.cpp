@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "guarded.h"
 #include "core/errors.h"
 #include "core/failures.h"
 #include "orchestrator/campaign/campaign_dir.h"
@@ -27,35 +28,6 @@ Sweep load_sweep(const std::string& path, std::vector<JobSpec>* jobs, std::strin
   Sweep s = Sweep::load(path, text);
   if (jobs) *jobs = s.expand();
   return s;
-}
-
-/// Runs a command body, turning every error into its message and exit code.
-template <class F>
-int guarded(const char* cmd, F&& body) {
-  try {
-    return body();
-  } catch (const SweepError& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
-    return exit_code::kConfig;
-  } catch (const ConfigError& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
-    return exit_code::kConfig;
-  } catch (const MissingCampaign& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
-    return exit_code::kConfig;
-  } catch (const CampaignBusy& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
-    return exit_code::kBusy;
-  } catch (const db::DbError& e) {
-    std::fprintf(stderr, "beverloo %s: database: %s\n", cmd, e.what());
-    return exit_code::kIo;
-  } catch (const IoError& e) {
-    std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, e.what());
-    return exit_code::kIo;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "beverloo %s: internal error: %s\n", cmd, e.what());
-    return exit_code::kInternal;
-  }
 }
 
 std::string fmt(const nlohmann::json& v) {

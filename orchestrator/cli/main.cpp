@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   beverloo::add_query_command(app, status);
   beverloo::add_report_commands(app, status);
   beverloo::add_params_command(app, status);
+  beverloo::add_experiment_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -58,5 +58,13 @@ ReportFigure k_vs_Esp(const FigureContext& c);
 ReportFigure k_vs_Kb(const FigureContext& c);
 ReportFigure k_heatmap_Kl_Kb(const FigureContext& c);
 ReportFigure velocity_profiles(const FigureContext& c);
+ReportFigure drain_q_vs_w(const FigureContext& c);
+ReportFigure drain_collapse(const FigureContext& c);
+ReportFigure drain_curves(const FigureContext& c);
+
+/// The data and plot clauses of Q(w) with fitted curves, and of the log-log collapse, for a
+/// list of series (shared by the continuous-flow and the draining-hopper figures).
+void plot_q_vs_w(Figure& f, const std::vector<const Series*>& list);
+void plot_collapse(Figure& f, const std::vector<const Series*>& list);
 
 }  // namespace beverloo::figures

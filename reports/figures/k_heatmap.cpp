@@ -13,7 +13,7 @@ ReportFigure k_heatmap_Kl_Kb(const FigureContext& c) {
   Figure f("k_heatmap_Kl_Kb", "Offset k (in sigma_avg) over (K_l, K_b) (DP)", "K_l (epsilon_0)", "K_b (epsilon_0)");
   std::map<std::string, std::vector<const Series*>> by;
   for (const Series& s : c.fits.series)
-    if (s.fit && s.is_dp())
+    if (s.fit && s.is_dp() && !s.rate_is_c0())
       by[s.model + " E_c=" + num(s.E_c) + " lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N) +
          (s.theta_left != 90 || s.theta_right != 90 ? " theta=" + num(s.theta_left) + "/" + num(s.theta_right) : "")]
           .push_back(&s);

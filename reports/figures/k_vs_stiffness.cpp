@@ -15,7 +15,7 @@ ReportFigure k_versus(const FigureContext& c, bool dp) {
   auto stiffness = [dp](const Series* s) { return dp ? s->K_b : s->E_sp; };
   std::map<std::string, std::vector<const Series*>> by;
   for (const Series& s : c.fits.series) {
-    if (!s.fit || s.is_dp() != dp) continue;
+    if (!s.fit || s.is_dp() != dp || s.rate_is_c0() || s.model == "experiment") continue;
     std::string label = std::to_string(s.dimension) + "D ";
     if (dp) label += s.model + " K_l=" + num(s.K_l) + " E_c=" + num(s.E_c) + " ";
     by[label + "lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N)].push_back(&s);

@@ -1,4 +1,5 @@
-// Q versus w per series, with the fitted Beverloo curve Q = C (w - k)^beta.
+// Q versus w per series, with the fitted Beverloo curve Q = C (w - k)^beta: the continuous flows,
+// and (paper Fig. 8c) the draining hoppers' Q = c0 t0, measured and simulated, on their own.
 #include <algorithm>
 #include <sstream>
 
@@ -7,11 +8,11 @@
 
 namespace beverloo::figures {
 
-ReportFigure q_vs_w(const FigureContext& c) {
-  Figure f("Q_vs_w", "Flow rate Q versus orifice width w, with fits Q = C (w - k)^beta", "w / sigma_avg", "Q / Q_0");
-  const int n = static_cast<int>(c.fits.series.size());
+void plot_q_vs_w(Figure& f, const std::vector<const Series*>& list) {
+  const int n = static_cast<int>(list.size());
   int k = 0;
-  for (const Series& s : c.fits.series) {
+  for (const Series* sp : list) {
+    const Series& s = *sp;
     const std::string style = series_style(k++, n);
     bool any = false;
     for (const auto& p : s.points) any |= p.flowing();
@@ -40,7 +41,25 @@ ReportFigure q_vs_w(const FigureContext& c) {
       f.plots.push_back("DATA index " + std::to_string(curve) + " using 1:2 with lines " + style + " notitle");
     }
   }
+}
+
+ReportFigure q_vs_w(const FigureContext& c) {
+  Figure f("Q_vs_w", "Flow rate Q versus orifice width w, with fits Q = C (w - k)^beta", "w / sigma_avg", "Q / Q_0");
+  std::vector<const Series*> list;
+  for (const Series& s : c.fits.series)
+    if (!s.rate_is_c0()) list.push_back(&s);
+  plot_q_vs_w(f, list);
   return finish(f, c.dir, "no finished jobs");
+}
+
+ReportFigure drain_q_vs_w(const FigureContext& c) {
+  Figure f("drain_Q_vs_w", "Draining hoppers: Q = c0 t0 versus w, measured and simulated (paper Fig. 8c)", "w / sigma_avg",
+           "Q = c0 t0, with dN/dt = -c0 N^(1/2)");
+  std::vector<const Series*> list;
+  for (const Series& s : c.fits.series)
+    if (s.rate_is_c0()) list.push_back(&s);
+  plot_q_vs_w(f, list);
+  return finish(f, c.dir, "no draining-hopper series (jobs with reinject = false, or `beverloo experiment import`)");
 }
 
 }  // namespace beverloo::figures

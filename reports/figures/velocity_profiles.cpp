@@ -17,6 +17,7 @@ ReportFigure velocity_profiles(const FigureContext& c) {
       "WHERE p.job_key = ?1 ORDER BY p.h");
   int shown = 0;
   for (const Series& s : c.fits.series) {
+    if (s.rate_is_c0()) continue;  // a draining hopper has no steady profile
     if (shown++ >= 4) break;  // the first four series; the data of all are in the database
     for (const std::string& key : s.job_keys) {
       st.bind(1, key);

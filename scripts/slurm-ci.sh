@@ -152,16 +152,42 @@ case "${1:-}" in
     log "cluster up in $(echo "$(date +%s.%N) - $t0" | bc) s ($(sinfo -h -o '%P %D %c %T' | head -1))"
     ;;
   stop)
-    command -v scancel > /dev/null || exit 0
-    scancel -u root > /dev/null 2>&1 || true
-    sleep 1
-    alive "$ROOT/run/slurmctld.pid" slurmctld && scontrol shutdown > /dev/null 2>&1 || true
-    for _ in $(seq 100); do
-      alive "$ROOT/run/slurmctld.pid" slurmctld || alive "$ROOT/run/slurmd.pid" slurmd || break
-      sleep 0.1
-    done
-    pkill -x munged 2>/dev/null || true
-    log "stopped"
+    # Says "stopped" only when slurmctld, slurmd and munged are gone. The polite way first
+    # (scontrol shutdown needs munge to authenticate, so munged goes last); then the daemons'
+    # own pids (pid files, and by name: a failed start may have left no pid file), TERM, KILL.
+    daemons_left() { pgrep -x slurmctld > /dev/null || pgrep -x slurmd > /dev/null || pgrep -x munged > /dev/null; }
+    slurm_left() { pgrep -x slurmctld > /dev/null || pgrep -x slurmd > /dev/null; }
+    wait_gone() {  # seconds, test command
+      local n=$(( $1 * 10 )); shift
+      for _ in $(seq "$n"); do "$@" || return 0; sleep 0.1; done
+      ! "$@"
+    }
+    if command -v scancel > /dev/null && munged_alive; then
+      scancel -u root > /dev/null 2>&1 || true
+      sleep 1
+      scontrol shutdown > /dev/null 2>&1 || true
+    fi
+    if ! wait_gone 10 slurm_left; then
+      log "slurmctld/slurmd still up after scontrol shutdown: sending SIGTERM to their pids"
+      for f in "$ROOT/run/slurmctld.pid" "$ROOT/run/slurmd.pid"; do
+        [ -f "$f" ] && kill -TERM "$(cat "$f")" 2>/dev/null || true
+      done
+      pkill -TERM -x slurmctld 2>/dev/null || true
+      pkill -TERM -x slurmd 2>/dev/null || true
+      if ! wait_gone 5 slurm_left; then
+        log "still up after SIGTERM: SIGKILL"
+        pkill -KILL -x slurmctld 2>/dev/null || true
+        pkill -KILL -x slurmd 2>/dev/null || true
+        wait_gone 5 slurm_left || true
+      fi
+    fi
+    pkill -TERM -x munged 2>/dev/null || true
+    wait_gone 5 daemons_left || { pkill -KILL -x munged 2>/dev/null || true; wait_gone 5 daemons_left || true; }
+    if daemons_left; then
+      log "NOT stopped: still running: $(pgrep -a -x 'slurmctld|slurmd|munged' | tr '\n' ' ')"
+      exit 1
+    fi
+    log "stopped (slurmctld, slurmd and munged are gone)"
     ;;
   status)
     alive "$ROOT/run/slurmctld.pid" slurmctld && echo "slurmctld $(cat "$ROOT/run/slurmctld.pid")" || echo "slurmctld down"

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/digest.h"
 #include "h5.h"
 
 namespace beverloo::job_output {
@@ -53,10 +54,24 @@ ResultCheck check_result(const std::string& dir, const SimConfig& c) {
   return {ResultState::Complete, ""};
 }
 
-CompletedRun read_completed(const std::string& dir, const SimConfig& c) {
+std::map<std::string, std::string> result_digests(const std::string& dir) {
+  std::map<std::string, std::string> d;
+  for (const char* name : {kResult, kSummary}) d[name] = sha256_hex(read_text(fs::path(dir) / name));
+  return d;
+}
+
+CompletedRun read_completed(const std::string& dir, const SimConfig& c, const std::map<std::string, std::string>& digests) {
   const ResultCheck check = check_result(dir, c);
   if (check.state != ResultState::Complete)
     throw IoError(check.state == ResultState::None ? dir + ": no " + kResult : check.reason);
+  // the bytes the engine wrote, not bytes changed since (an edited summary, a copied result)
+  const std::map<std::string, std::string> now = result_digests(dir);
+  for (const char* name : {kResult, kSummary}) {
+    const auto it = digests.find(name);
+    if (it == digests.end()) throw IoError(dir + ": the outcome records no digest of " + name);
+    if (it->second != now.at(name))
+      throw IoError((fs::path(dir) / name).string() + " changed after the engine wrote it (its SHA-256 is not the one recorded)");
+  }
   CompletedRun out;
   out.summary_json = read_text(fs::path(dir) / kSummary);
   H5Handle f = h5::open_file((fs::path(dir) / kResult).string());

@@ -3,6 +3,7 @@
 /// \brief The engine's files in a job directory, and the one answer to "does this directory
 /// hold a complete, intact result of this job?". Only the engine reads or writes these files
 /// (layout: docs/hdf5-layout.md); the worker, `simulate` and the coordinator ask here.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,13 @@ struct CompletedRun {
   std::string summary_json;  ///< summary.json as the engine wrote it
   std::vector<double> h, v_g, v_g_err;  ///< the velocity profile
 };
-/// Reads a Complete result; throws IoError naming what is damaged otherwise.
-CompletedRun read_completed(const std::string& dir, const SimConfig& c);
+/// SHA-256 of each of the result's files (result.h5, summary.json) as they are now; throws
+/// IoError if one cannot be read. The worker records them in its outcome when the engine ends.
+std::map<std::string, std::string> result_digests(const std::string& dir);
+
+/// Reads a Complete result whose files still have the given digests (those the engine's
+/// outcome recorded); throws IoError naming what is damaged, missing or changed otherwise.
+CompletedRun read_completed(const std::string& dir, const SimConfig& c, const std::map<std::string, std::string>& digests);
 
 /// A finished draining run's exits (reinject = false), for `beverloo experiment export-drain`.
 struct DrainRecord {

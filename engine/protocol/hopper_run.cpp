@@ -17,12 +17,20 @@
 #include "../models/dp_model.h"
 #include "../models/sp_model.h"
 #include "drain_fit.h"
+#include "memory_estimate.h"
 #include "placement.h"
 
 namespace beverloo {
 namespace {
 
 std::int64_t steps_for(double time, double dt) { return std::max<std::int64_t>(1, std::llround(time / dt)); }
+
+/// c, once it is known to fit in memory: the first member's initialiser, so that a job this
+/// machine cannot hold is refused before any member allocates.
+const SimConfig& fits_in_memory(const SimConfig& c) {
+  check_memory(c);
+  return c;
+}
 
 }  // namespace
 
@@ -33,7 +41,7 @@ struct HopperRun<D>::Trajectory {
 
 template <int D>
 HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
-    : c_(c),
+    : c_(fits_in_memory(c)),
       opt_(std::move(options)),
       ts_(choose_time_step(c)),
       hopper_(make_hopper<D>(c)),
@@ -165,6 +173,7 @@ void HopperRun<D>::between_drift_and_force(ParticleState<D>& bodies, NeighborLis
 template <int D>
 void HopperRun<D>::step_once() {
   step_t_next_ = (s_.step + 1) * ts_.dt;
+  if (!c_.reinject) session_particle_steps_ += s_.size();
   const StepReport r = model_->step(s_, ts_.dt, *this);
   model_->check_step(r, time(), c_.max_overlap);
   rec_.max_overlap_seen = std::max(rec_.max_overlap_seen, r.forces.max_overlap);
@@ -258,6 +267,11 @@ RunResult HopperRun<D>::run() {
 }
 
 template <int D>
+double HopperRun<D>::particle_steps_this_session() const {
+  return c_.reinject ? (s_.step - session_first_step_) * double(s_.size()) : session_particle_steps_;
+}
+
+template <int D>
 void HopperRun<D>::report_progress(const FlowRateEstimate& e, bool force) {
   if (opt_.progress == ProgressMode::Quiet) return;
   const auto now = std::chrono::steady_clock::now();
@@ -266,7 +280,7 @@ void HopperRun<D>::report_progress(const FlowRateEstimate& e, bool force) {
   if (!force && since < (terminal ? 0.25 : 10.0)) return;
   last_progress_ = now;
   const double wall = std::chrono::duration<double>(now - session_start_).count();
-  const double rate = wall > 0 ? (s_.step - session_first_step_) * double(s_.size()) / wall : 0;
+  const double rate = wall > 0 ? particle_steps_this_session() / wall : 0;
   char line[256];
   // Q and the window only once the window is open and long enough for an error (before that
   // the estimator's numbers are placeholders, and a window "80-40" would be nonsense)
@@ -349,7 +363,7 @@ RunResult HopperRun<D>::finish(const std::string& status, const std::string& rea
   r.max_overlap_seen = rec_.max_overlap_seen;
   const double session = std::chrono::duration<double>(std::chrono::steady_clock::now() - session_start_).count();
   r.wall_seconds = wall_seconds_before_ + session;
-  r.particle_steps_per_second = session > 0 ? (s_.step - session_first_step_) * double(s_.size()) / session : 0;
+  r.particle_steps_per_second = session > 0 ? particle_steps_this_session() / session : 0;
   r.neighbor_builds = neighbor_builds();
   r.resumed_times = resumed_times_;
   report_progress(e, true);

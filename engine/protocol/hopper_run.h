@@ -122,6 +122,9 @@ class HopperRun : private StepHook<D> {
   int resumed_times_ = 0;
   std::chrono::steady_clock::time_point session_start_, last_progress_, last_checkpoint_;
   std::int64_t session_first_step_ = 0;
+  /// particle-steps of this session (a draining hopper's N falls, so steps times N is not it)
+  double session_particle_steps_ = 0;
+  double particle_steps_this_session() const;
   struct Trajectory;
   std::unique_ptr<Trajectory> traj_;
 };

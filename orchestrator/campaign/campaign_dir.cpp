@@ -4,6 +4,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,34 @@ bool holds_campaign(const std::string& dir) {
   std::error_code ec;
   return fs::is_regular_file(database_path(dir), ec);
 }
+void check_store_file(const std::string& dir) {
+  const std::string path = database_path(dir);
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) return;
+  if (!fs::is_regular_file(st))
+    throw ConfigError(path, "is not a regular file (a directory, FIFO or device): not a campaign database; refusing to touch it");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path, "cannot be read");
+  unsigned char h[100] = {};
+  in.read(reinterpret_cast<char*>(h), sizeof h);
+  const std::streamsize got = in.gcount();
+  if (got == 0) return;  // an empty file: SQLite makes a new database of it
+  static const char kMagic[16] = {'S', 'Q', 'L', 'i', 't', 'e', ' ', 'f', 'o', 'r', 'm', 'a', 't', ' ', '3', '\0'};
+  if (got < 100 || std::memcmp(h, kMagic, 16) != 0)
+    throw ConfigError(path, "is not an SQLite database (no SQLite header): not a beverloo campaign; refusing to touch it");
+  auto be32 = [&](int at) {
+    return (std::uint32_t(h[at]) << 24) | (std::uint32_t(h[at + 1]) << 16) | (std::uint32_t(h[at + 2]) << 8) | h[at + 3];
+  };
+  const std::uint32_t schema_cookie = be32(40), user_version = be32(60), application_id = be32(68);
+  if (application_id != db::kApplicationId && (application_id != 0 || user_version != 0 || schema_cookie != 0))
+    throw ConfigError(path, "is an SQLite database of another application (application_id " +
+                                std::to_string(application_id) + "), not a beverloo campaign; refusing to touch it");
+  if (static_cast<std::int64_t>(user_version) > db::known_schema_version())
+    throw ConfigError(path, "has campaign schema version " + std::to_string(user_version) + ", newer than this beverloo (" +
+                                std::to_string(db::known_schema_version()) + "); use a newer beverloo");
+}
+
 }  // namespace campaign_dir
 
 MissingCampaign::MissingCampaign(const std::string& dir)
@@ -54,6 +83,8 @@ CoordinatorLock::~CoordinatorLock() {
 }
 
 CampaignWriter::Prepared::Prepared(const std::string& dir, Open how) {
+  if (how == Open::MustExist && !campaign_dir::holds_campaign(dir)) throw MissingCampaign(dir);
+  campaign_dir::check_store_file(dir);  // before the directory, the lock or SQLite touch anything
   if (how == Open::CreateIfMissing) {
     std::error_code ec;
     fs::create_directories(dir, ec);  // jobs/ once the store is known to be ours
@@ -73,6 +104,7 @@ CampaignWriter::CampaignWriter(const std::string& dir, Open how)
 
 CampaignReader::Prepared::Prepared(const std::string& dir) {
   if (!campaign_dir::holds_campaign(dir)) throw MissingCampaign(dir);
+  campaign_dir::check_store_file(dir);
 }
 
 namespace {

@@ -30,6 +30,12 @@ std::string report_path(const std::string& dir);
 std::string job_dir_relative(const std::string& job_key);
 /// True if DIR holds a store file (a regular file named campaign.sqlite).
 bool holds_campaign(const std::string& dir);
+/// Reads the store file's 100-byte SQLite header, with plain file reads (no SQLite, no lock, no
+/// WAL files), and throws ConfigError naming the file if it is not ours: not a regular file, not
+/// an SQLite database, another application's (application_id), or a newer schema (user_version).
+/// Absent or empty: fine (a new campaign). Every opener calls it before anything else, so that
+/// a refusal leaves the directory exactly as it was.
+void check_store_file(const std::string& dir);
 }  // namespace campaign_dir
 
 /// DIR holds no campaign.sqlite (or something else by that name): bad input, exit code 2.

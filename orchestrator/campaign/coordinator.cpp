@@ -58,7 +58,16 @@ class Coordinator {
       for (int free = ex_.free_slots(); free > 0; --free) {
         auto job = store_.claim_next(campaign_, ex_.name(), host_);
         if (!job) break;
-        write_spec(*job);
+        try {
+          write_spec(*job);
+        } catch (const std::exception& e) {
+          // the job's directory cannot be made or written: this attempt fails as an I/O failure
+          // (retried within the budget, then failed with this reason); the campaign goes on
+          const std::string why = std::string("cannot prepare the job directory: ") + e.what();
+          const std::string state = store_.record_failure(job->attempt_id, job->key, FailureClass::Io, -1, why, o_.max_retries);
+          log_event(*job, std::string(to_string(FailureClass::Io)) + " -> " + state, why);
+          continue;
+        }
         batch.push_back(*job);
       }
       if (!batch.empty()) {
@@ -86,6 +95,14 @@ class Coordinator {
 
   void write_spec(const ClaimedJob& job) {
     const std::string dir = job_dir(job.dir);
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(dir, ec)) && !fs::is_directory(fs::symlink_status(dir, ec))) {
+      // something that is not a directory where the job's directory belongs (jobs/ is ours):
+      // kept aside under another name, and the job runs again in a directory of its own
+      const std::string aside = dir + ".not-a-directory";
+      fs::rename(dir, aside);
+      std::fprintf(stderr, "[beverloo] %s was not a directory; moved to %s\n", dir.c_str(), aside.c_str());
+    }
     fs::create_directories(dir);
     const nlohmann::json spec = {{"key", job.key},
                                  {"attempt_no", job.attempt_no},
@@ -105,12 +122,15 @@ class Coordinator {
     if (ours && outcome->exit_code == exit_code::kOk) {
       try {  // the engine says whether its files are complete and intact
         const job_output::CompletedRun r =
-            job_output::read_completed(dir, SimConfig::from_json(nlohmann::json::parse(job.job_json)));
+            job_output::read_completed(dir, SimConfig::from_json(nlohmann::json::parse(job.job_json)), outcome->files);
         store_.ingest_success(job, r.summary_json, r.h, r.v_g, r.v_g_err);
         log_event(job, "done", "");
         return;
       } catch (const std::exception& e) {
-        damaged = e.what();  // a success whose files are damaged or missing: an I/O failure, retried
+        // a success whose files are damaged, missing or changed: an I/O failure, retried; the
+        // files go, so that the retry runs the job (from its checkpoint) instead of finding them
+        damaged = e.what();
+        job_output::remove_result(dir);
       }
     }
     FailureClass cls = FailureClass::Lost;

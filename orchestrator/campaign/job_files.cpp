@@ -17,8 +17,10 @@ std::optional<Outcome> read_outcome(const std::string& job_dir) {
   if (!in) return std::nullopt;
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
-    return Outcome{j.at("token"), j.at("attempt_no"), j.at("exit_code"), j.value("failure_class", ""),
-                   j.value("message", "")};
+    Outcome o{j.at("token"), j.at("attempt_no"), j.at("exit_code"), j.value("failure_class", ""),
+              j.value("message", ""), {}};
+    if (j.contains("files")) o.files = j.at("files").get<std::map<std::string, std::string>>();
+    return o;
   } catch (const std::exception&) {
     return std::nullopt;  // written atomically, so a broken one is foreign: ignore it
   }
@@ -29,7 +31,8 @@ void write_outcome(const std::string& job_dir, const Outcome& o) {
                             {"attempt_no", o.attempt_no},
                             {"exit_code", o.exit_code},
                             {"failure_class", o.failure_class},
-                            {"message", o.message}};
+                            {"message", o.message},
+                            {"files", o.files}};
   write_text_atomically((std::filesystem::path(job_dir) / kOutcome).string(), j.dump(2) + "\n");
 }
 

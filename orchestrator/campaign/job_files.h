@@ -8,6 +8,7 @@
 /// Slurm array tasks find their attempts in a manifest, slurm/<submission>/manifest.json:
 /// {"root": campaign dir, "tasks": [[{"dir": "jobs/..", "token": ".."}, ...], ...]}, one list
 /// per array index (several short jobs bundled into one task run one after the other).
+#include <map>
 #include <optional>
 #include <string>
 
@@ -26,6 +27,9 @@ struct Outcome {
   int attempt_no = 0;
   int exit_code = 0;
   std::string failure_class, message;
+  /// On success: the SHA-256 of each file of the engine's result (job_output::result_digests),
+  /// taken as the engine finished, so that the coordinator ingests exactly those bytes.
+  std::map<std::string, std::string> files;
 };
 
 /// What a live worker last said about itself.

@@ -114,7 +114,10 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
   try {
     // A previous attempt may have finished the run and died before writing its outcome.
     const job_output::ResultCheck done = job_output::check_result(dir, c);
-    if (done.state == job_output::ResultState::Complete) return finish(std::nullopt, "");
+    if (done.state == job_output::ResultState::Complete) {
+      out.files = job_output::result_digests(dir);
+      return finish(std::nullopt, "");
+    }
     if (done.state != job_output::ResultState::None) {
       // damaged, or another job's: run it again (from the checkpoint if there is one)
       std::fprintf(stderr, "beverloo worker: %s; running the job again\n", done.reason.c_str());
@@ -128,6 +131,7 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
     opt.progress_step = &step;
     const RunResult r = run_hopper(c, opt);
     if (r.status == "interrupted") return finish(FailureClass::Interrupted, r.stop_reason);
+    out.files = job_output::result_digests(dir);  // the bytes just written, for the coordinator to check
     return finish(std::nullopt, "");
   } catch (const ConfigError& e) {
     return finish(FailureClass::InvalidParameters, e.what());
@@ -249,7 +253,7 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
       LogRedirect log(dir);
       if (stop->load()) {
         job_files::write_outcome(dir, {token, spec.at("attempt_no"), exit_code::kInterrupted, std::string(to_string(FailureClass::Interrupted)),
-                                       "not started: the array task was stopped before it"});
+                                       "not started: the array task was stopped before it", {}});
         code = exit_code::kInterrupted;
       } else {
         std::fprintf(stderr, "beverloo worker: attempt %d in Slurm task %s_%s (restart %s)\n", spec.at("attempt_no").get<int>(),

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "guarded.h"
 #include "core/failures.h"
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/db/database.h"
@@ -214,6 +215,8 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
     }
     std::fprintf(stderr, "beverloo query: %s\n", e.what());
     return exit_code::kIo;
+  } catch (const std::exception& e) {  // not ours (ConfigError), busy, I/O: the shared table
+    return guarded("query", [&]() -> int { throw; });
   }
 }
 

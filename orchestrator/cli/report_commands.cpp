@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "guarded.h"
 #include "core/errors.h"
 #include "core/failures.h"
 #include "orchestrator/campaign/campaign_dir.h"
@@ -15,23 +16,14 @@ namespace beverloo {
 namespace fs = std::filesystem;
 
 int report_campaign(const std::string& dir, const std::string& out) {
-  try {
+  return guarded("report", [&] {
     const auto figures = write_report(dir, out);
     int made = 0;
     for (const auto& f : figures) made += f.made;
     std::printf("report: %s/index.html (%d of %zu figures; tables beverloo_fits and crossover_fits)\n", out.c_str(), made,
                 figures.size());
     return exit_code::kOk;
-  } catch (const MissingCampaign& e) {
-    std::fprintf(stderr, "beverloo report: %s\n", e.what());
-    return exit_code::kConfig;
-  } catch (const CampaignBusy& e) {
-    std::fprintf(stderr, "beverloo report: %s\n", e.what());
-    return exit_code::kBusy;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "beverloo report: %s\n", e.what());
-    return exit_code::kIo;
-  }
+  });
 }
 
 void add_report_commands(CLI::App& app, int& exit_status) {
@@ -39,7 +31,7 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   CLI::App* fit = app.add_subcommand("fit", "Fit Q = C (w - k)^beta per series and beta(lambda) per group");
   fit->add_option("DIR", *dir, "campaign directory")->required();
   fit->callback([dir, &exit_status] {
-    try {
+    exit_status = guarded("fit", [&] {
       CampaignWriter writer(*dir, CampaignWriter::Open::MustExist);
       db::Database& db = writer.db();
       const CampaignFits fits = fit_campaign(db);
@@ -50,17 +42,8 @@ void add_report_commands(CLI::App& app, int& exit_status) {
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits) and %s/*.csv, *.md\n",
                   dir->c_str(), out.c_str());
-      exit_status = exit_code::kOk;
-    } catch (const MissingCampaign& e) {
-      std::fprintf(stderr, "beverloo fit: %s\n", e.what());
-      exit_status = exit_code::kConfig;
-    } catch (const CampaignBusy& e) {
-      std::fprintf(stderr, "beverloo fit: %s\n", e.what());
-      exit_status = exit_code::kBusy;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "beverloo fit: %s\n", e.what());
-      exit_status = exit_code::kIo;
-    }
+      return exit_code::kOk;
+    });
   });
   auto rdir = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();

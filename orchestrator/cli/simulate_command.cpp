@@ -7,6 +7,7 @@
 #include "core/atomic_file.h"
 #include "commands.h"
 #include "engine/models/model_time_step.h"
+#include "engine/protocol/memory_estimate.h"
 #include "engine/io/job_output.h"
 #include "engine/json_file.h"
 #include "engine/protocol/hopper_run.h"
@@ -54,6 +55,7 @@ int run_simulate(const SimulateArgs& a) {
   try {
     c = read_job(a.job_path);
     (void)choose_time_step(c);  // refuse an unstable explicit dt before anything is written
+    check_memory(c);            // and a job this machine cannot hold
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
     return exit_code::kConfig;

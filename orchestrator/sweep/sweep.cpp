@@ -220,7 +220,24 @@ std::set<std::string> identifiers(const std::string& expr) {
 }
 
 /// Evaluates an expression with the point's numeric parameters as variables.
+/// True if expr assigns (muparser's =, +=, -=, *=, /=): in a filter or a derived value that is a
+/// typo for a comparison ("w = 3" would set w and count as true for every point).
+bool assigns(const std::string& expr) {
+  for (std::size_t i = 0; i < expr.size(); ++i) {
+    if (expr[i] != '=') continue;
+    const char before = i > 0 ? expr[i - 1] : ' ', after = i + 1 < expr.size() ? expr[i + 1] : ' ';
+    if (after == '=') {
+      ++i;  // "==": a comparison
+      continue;
+    }
+    if (before != '<' && before != '>' && before != '!') return true;
+  }
+  return false;
+}
+
 double evaluate(const std::string& expr, const Point& point, const std::string& path) {
+  if (assigns(expr))
+    throw SweepError(path, "\"" + expr + "\": '=' assigns; compare with '==' (or <=, >=, !=)");
   mu::Parser parser;
   std::map<std::string, double> vars;
   for (const auto& [name, t] : point) {

@@ -36,8 +36,14 @@ TEST(JobOutput, CompleteDamagedAndForeignResultsAreTold) {
   opt.progress = ProgressMode::Quiet;
   (void)run_hopper(c, opt);
   EXPECT_EQ(job_output::check_result(dir.string(), c).state, ResultState::Complete);
-  const auto run = job_output::read_completed(dir.string(), c);
+  const auto digests = job_output::result_digests(dir.string());
+  const auto run = job_output::read_completed(dir.string(), c, digests);
   EXPECT_FALSE(run.v_g.empty());
+  // without the engine's digests, or with others, nothing is read
+  EXPECT_THROW((void)job_output::read_completed(dir.string(), c, {}), IoError);
+  auto wrong = digests;
+  wrong[job_output::kSummary] = std::string(64, '0');
+  EXPECT_THROW((void)job_output::read_completed(dir.string(), c, wrong), IoError);
 
   SimConfig other = c;
   other.w = 4.5;
@@ -53,7 +59,18 @@ TEST(JobOutput, CompleteDamagedAndForeignResultsAreTold) {
   edited["Q"] = edited["Q"].get<double>() * 2 + 1;
   std::ofstream(summary) << edited.dump(2);
   EXPECT_EQ(job_output::check_result(dir.string(), c).state, ResultState::Damaged);
-  EXPECT_THROW((void)job_output::read_completed(dir.string(), c), IoError);
+  EXPECT_THROW((void)job_output::read_completed(dir.string(), c, digests), IoError);
+  // an edit that keeps Q, its error, the steps and the seed passes the consistency check, not the digest
+  auto subtle = nlohmann::json::parse(text);
+  subtle["rho_n"] = subtle["rho_n"].get<double>() + 1;
+  std::ofstream(summary) << subtle.dump(2);
+  EXPECT_EQ(job_output::check_result(dir.string(), c).state, ResultState::Complete);
+  try {
+    (void)job_output::read_completed(dir.string(), c, digests);
+    ADD_FAILURE() << "an edited summary was read";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("changed after the engine wrote it"), std::string::npos) << e.what();
+  }
   // a missing summary, then a truncated result.h5
   std::ofstream(summary) << text;
   EXPECT_EQ(job_output::check_result(dir.string(), c).state, ResultState::Complete);

@@ -1,0 +1,24 @@
+#pragma once
+/// \file memory_estimate.h
+/// \brief A job's memory, estimated from its configuration before anything is allocated, and
+/// the check that refuses a job this machine cannot hold (a ConfigError naming N, not an
+/// allocation failure half-way through placement). The estimate is deliberately generous per
+/// moving point (particle or DP vertex): state (x, v, f, species, mass, flags), the Verlet list
+/// (reference positions, cells, rows, neighbours within sigma + skin), scratch of the terms and
+/// observables; measured peaks (heaptrack) were below it for 2D and 3D SP and for DP.
+#include <cstdint>
+
+#include "../config.h"
+
+namespace beverloo {
+
+/// Bytes the job will need at its peak, roughly (an upper estimate).
+std::uint64_t estimated_memory_bytes(const SimConfig& c);
+
+/// The memory this process may use: physical memory, or the cgroup limit if smaller.
+std::uint64_t available_memory_bytes();
+
+/// Throws ConfigError("N", ...) if the estimate exceeds the available memory.
+void check_memory(const SimConfig& c);
+
+}  // namespace beverloo

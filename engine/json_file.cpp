@@ -26,6 +26,15 @@ nlohmann::json read_json_file(const std::string& path, std::string* text) {
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string s = ss.str();
+  nlohmann::json j = parse_json_text(s, path);
+  if (text) *text = s;
+  return j;
+}
+
+nlohmann::json parse_json_text(const std::string& s, const std::string& path) {
+  if (s.size() > kMaxJsonFileBytes)
+    throw ConfigError(path, "is " + std::to_string(s.size()) + " bytes, more than the limit of " +
+                                std::to_string(kMaxJsonFileBytes));
   nlohmann::json j;
   try {
     // The callback sees every nesting level while parsing, before a deep tree exists; and
@@ -81,7 +90,6 @@ nlohmann::json read_json_file(const std::string& path, std::string* text) {
   } catch (const nlohmann::json::exception& e) {
     throw ConfigError(path, std::string("is not valid JSON: ") + e.what());
   }
-  if (text) *text = s;
   return j;
 }
 

@@ -18,4 +18,7 @@ inline constexpr int kMaxJsonDepth = 64;
 /// Reads and parses path; the file's text goes to *text if given. Throws ConfigError(path, ...).
 nlohmann::json read_json_file(const std::string& path, std::string* text = nullptr);
 
+/// The same rules for text already in memory (the fuzzers' entry); `path` names it in messages.
+nlohmann::json parse_json_text(const std::string& text, const std::string& path);
+
 }  // namespace beverloo

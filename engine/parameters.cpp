@@ -21,8 +21,6 @@ namespace {
 #define TEXT(member) ParamAccess{.text = [](SimConfig& c) -> std::string& { return c.member; }}
 #define OPT_REAL(member) ParamAccess{.optional_real = [](SimConfig& c) -> std::optional<double>& { return c.member; }}
 
-constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-
 std::vector<ParamSpec> build_table() {
   using T = ParamType;
   using M = ParamModels;

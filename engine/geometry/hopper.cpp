@@ -4,7 +4,7 @@
 
 namespace beverloo {
 
-Hopper<2>::Hopper(double W, double w, double theta_left_rad, double theta_right_rad) : W_(W), w_(w) {
+Hopper<2>::Hopper(double W, double w, double theta_left_rad, double theta_right_rad) : w_(w) {
   auto make = [](Vec<2> a, Vec<2> b) {
     Segment s;
     s.a = a;

@@ -71,7 +71,7 @@ class Hopper<2> {
     Vec<2> a, u;
     double length;
   };
-  double W_, w_, h_left_, h_right_, x_min_, x_max_;
+  double w_, h_left_, h_right_, x_min_, x_max_;
   Segment seg_[kNumWalls];
 };
 

@@ -5,7 +5,9 @@
 /// allocation failure half-way through placement). The estimate is deliberately generous per
 /// moving point (particle or DP vertex): state (x, v, f, species, mass, flags), the Verlet list
 /// (reference positions, cells, rows, neighbours within sigma + skin), scratch of the terms and
-/// observables; measured peaks (heaptrack) were below it for 2D and 3D SP and for DP.
+/// observables. Measured peaks (maximum resident set, /usr/bin/time -v, 2026-12-02): 24 MB for
+/// 50 000 2D SP particles, 26 MB for 50 000 3D, 23 MB for 2000 DP polygons, where the estimate
+/// says 80, 94 and 76 MB: it refuses only what is far beyond the machine.
 #include <cstdint>
 
 #include "../config.h"

@@ -44,7 +44,7 @@ FailureClass classify(const WorkerExit& e) { return failure_from_exit(e.signaled
 class Coordinator {
  public:
   Coordinator(db::Database& db, std::int64_t campaign, const CampaignOptions& o, Executor& ex)
-      : db_(db), store_(db), campaign_(campaign), o_(o), ex_(ex), host_(host_name()) {}
+      : store_(db), campaign_(campaign), o_(o), ex_(ex), host_(host_name()) {}
 
   int run(const std::atomic<bool>* stop) {
     // every attempt left in flight by an earlier coordinator is accounted for before anything new starts
@@ -253,7 +253,6 @@ class Coordinator {
     ClaimedJob job;
     Clock::time_point started;
   };
-  db::Database& db_;
   CampaignStore store_;
   std::int64_t campaign_;
   CampaignOptions o_;

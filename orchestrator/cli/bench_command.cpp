@@ -4,15 +4,22 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <vector>
 
+#include "core/atomic_file.h"
+#include "engine/json_file.h"
 #include "engine/models/model_time_step.h"
 #include "engine/protocol/hopper_run.h"
 #include "commands.h"
+#include "guarded.h"
 #include "core/failures.h"
 
 namespace beverloo {
 namespace {
+
+/// Where the human-readable lines go: stdout, or stderr when the JSON goes to stdout (--json -).
+FILE* human = stdout;
 
 struct BenchCase {
   std::string id, description;
@@ -77,8 +84,16 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
   };
 }
 
+/// One case's measurement (bench --json: docs/cli.md).
+struct CaseResult {
+  std::string id, description, unit;
+  double median = 0, min = 0, max = 0, dt = 0, builds_per_kstep = 0, skin = 0;
+  int runs = 0;
+  std::int64_t steps = 0, points = 0;
+};
+
 template <int D>
-void run_case(const BenchCase& bc, int runs) {
+CaseResult run_case(const BenchCase& bc, int runs) {
   HopperRun<D> warm(bc.config, RunOptions{});
   warm.prepare();
   warm.advance(std::llround(bc.warmup_time / warm.time_step().dt));
@@ -98,11 +113,34 @@ void run_case(const BenchCase& bc, int runs) {
   }
   std::sort(rates.begin(), rates.end());
   const double median = rates[rates.size() / 2];
-  std::printf("%-2s %-58s skin %.2f builds/1000 steps %.1f  median %8.3g  min %8.3g  max %8.3g %s-steps/s  (%d runs x %lld steps, dt %.3g)\n",
+  CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
+                 rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points()};
+  std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %8.3g  min %8.3g  max %8.3g %s-steps/s  (%d runs x %lld steps, dt %.3g)\n",
               bc.id.c_str(), bc.description.c_str(), bc.config.skin, builds_per_kstep, median, rates.front(), rates.back(),
               bc.config.is_dp() ? "vertex" : "particle", runs,
               static_cast<long long>(bc.steps), warm.time_step().dt);
-  std::fflush(stdout);
+  std::fflush(human);
+  return out;
+}
+
+nlohmann::json to_json(const CaseResult& r) {
+  return {{"id", r.id}, {"description", r.description}, {"unit", r.unit}, {"median", r.median}, {"min", r.min},
+          {"max", r.max}, {"runs", r.runs}, {"steps_per_run", r.steps}, {"moving_points", r.points}, {"dt", r.dt},
+          {"skin", r.skin}, {"list_builds_per_1000_steps", r.builds_per_kstep}};
+}
+
+/// The medians of an earlier `bench --json` by case id; ConfigError naming the file if unreadable.
+std::map<std::string, double> read_baseline(const std::string& path) {
+  const nlohmann::json j = read_json_file(path);
+  std::map<std::string, double> medians;
+  if (!j.is_object() || !j.contains("cases") || !j["cases"].is_array())
+    throw ConfigError(path, "is not the output of `beverloo bench --json` (no \"cases\" list)");
+  for (const auto& c : j["cases"]) {
+    if (!c.is_object() || !c.contains("id") || !c.contains("median") || !c["id"].is_string() || !c["median"].is_number())
+      throw ConfigError(path, "a case lacks its \"id\" or \"median\"");
+    medians[c["id"].get<std::string>()] = c["median"].get<double>();
+  }
+  return medians;
 }
 
 /// Rough wall seconds of a case, for the line printed before any runs: every step of the warm-up
@@ -125,6 +163,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
     std::vector<std::string> cases;
     double scale = 1.0;
     double skin = 0;
+    std::string json_out, baseline;
   };
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("bench", "Standard performance cases: particle-steps per second");
@@ -132,25 +171,46 @@ void add_bench_command(CLI::App& app, int& exit_status) {
   cmd->add_option("--case", a->cases, "cases to run (a, b, c, d, e, f; default all)");
   cmd->add_option("--scale", a->scale, "multiply the timed steps by this")->check(CLI::PositiveNumber);
   cmd->add_option("--skin", a->skin, "Verlet skin (default: the job default)")->check(CLI::PositiveNumber);
+  cmd->add_option("--json", a->json_out, "also write the results as JSON to this file (- for stdout)");
+  cmd->add_option("--baseline", a->baseline, "an earlier --json output: print each case's ratio to it");
   cmd->callback([a, &exit_status] {
+    exit_status = guarded("bench", [&] {
+    human = a->json_out == "-" ? stderr : stdout;
+    const std::map<std::string, double> baseline = a->baseline.empty() ? std::map<std::string, double>{} : read_baseline(a->baseline);
     std::vector<BenchCase> chosen;
     for (const BenchCase& bc : standard_cases(a->scale, a->skin))
       if (a->cases.empty() || std::find(a->cases.begin(), a->cases.end(), bc.id) != a->cases.end()) chosen.push_back(bc);
     double estimate = 0;
     for (const BenchCase& bc : chosen) estimate += estimated_seconds(bc, a->runs);
-    std::printf("bench: %zu case(s) x %d runs; roughly %.0f s on a machine like the one it was written on "
+    std::fprintf(human, "bench: %zu case(s) x %d runs; roughly %.0f s on a machine like the one it was written on "
                 "(the DP cases' warm-up of 0.3 t0 takes most of theirs)\n",
                 chosen.size(), a->runs, estimate);
-    std::fflush(stdout);
+    std::fflush(human);
     const auto start = std::chrono::steady_clock::now();
+    nlohmann::json cases = nlohmann::json::array();
     for (const BenchCase& bc : chosen) {
-      if (bc.config.dimension == 2)
-        run_case<2>(bc, a->runs);
-      else
-        run_case<3>(bc, a->runs);
+      const CaseResult r = bc.config.dimension == 2 ? run_case<2>(bc, a->runs) : run_case<3>(bc, a->runs);
+      cases.push_back(to_json(r));
+      const auto it = baseline.find(r.id);
+      if (it != baseline.end() && it->second > 0) {
+        std::fprintf(human, "   %s: %.3f x the baseline's median (%.3g %s)\n", r.id.c_str(), r.median / it->second, it->second,
+                    r.unit.c_str());
+        cases.back()["baseline_median"] = it->second;
+        cases.back()["ratio_to_baseline"] = r.median / it->second;
+      }
+      std::fflush(human);
     }
-    std::printf("bench: done in %.0f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    exit_status = exit_code::kOk;
+    std::fprintf(human, "bench: done in %.0f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (!a->json_out.empty()) {
+      const nlohmann::json out = {{"engine_version", BEVERLOO_VERSION}, {"runs", a->runs}, {"scale", a->scale},
+                                  {"cases", cases}};
+      if (a->json_out == "-")
+        std::fprintf(stdout, "%s\n", out.dump(2).c_str());
+      else
+        write_text_atomically(a->json_out, out.dump(2) + "\n");
+    }
+    return exit_code::kOk;
+    });
   });
 }
 

@@ -57,8 +57,13 @@ ExperimentFile read_csv(const std::string& path) {
   if (!in) throw ConfigError(path, "cannot read the file");
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string text = ss.str();
+  return parse_csv_text(ss.str(), path);
+}
 
+ExperimentFile parse_csv_text(const std::string& text, const std::string& path) {
+  if (text.size() > kMaxCsvBytes)
+    throw ConfigError(path, "is " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                                std::to_string(kMaxCsvBytes));
   ExperimentFile f;
   f.path = path;
   f.sha256 = sha256_hex(text);

@@ -42,6 +42,8 @@ struct ExperimentFile {
 
 /// Reads and checks path (a regular file of at most kMaxCsvBytes).
 ExperimentFile read_csv(const std::string& path);
+/// The same for text in memory (the fuzzers' entry); `path` names it in messages.
+ExperimentFile parse_csv_text(const std::string& text, const std::string& path);
 
 /// The physical constants of a series: from the header, overridden by the command line.
 struct Units {

@@ -155,8 +155,9 @@ case "${1:-}" in
     # Says "stopped" only when slurmctld, slurmd and munged are gone. The polite way first
     # (scontrol shutdown needs munge to authenticate, so munged goes last); then the daemons'
     # own pids (pid files, and by name: a failed start may have left no pid file), TERM, KILL.
-    daemons_left() { pgrep -x slurmctld > /dev/null || pgrep -x slurmd > /dev/null || pgrep -x munged > /dev/null; }
-    slurm_left() { pgrep -x slurmctld > /dev/null || pgrep -x slurmd > /dev/null; }
+    running() { ps -C "$1" -o stat= 2>/dev/null | grep -qv '^Z'; }  # a zombie has ended
+    daemons_left() { running slurmctld || running slurmd || running munged; }
+    slurm_left() { running slurmctld || running slurmd; }
     wait_gone() {  # seconds, test command
       local n=$(( $1 * 10 )); shift
       for _ in $(seq "$n"); do "$@" || return 0; sleep 0.1; done
@@ -184,7 +185,7 @@ case "${1:-}" in
     pkill -TERM -x munged 2>/dev/null || true
     wait_gone 5 daemons_left || { pkill -KILL -x munged 2>/dev/null || true; wait_gone 5 daemons_left || true; }
     if daemons_left; then
-      log "NOT stopped: still running: $(pgrep -a -x 'slurmctld|slurmd|munged' | tr '\n' ' ')"
+      log "NOT stopped: still running: $(for d in slurmctld slurmd munged; do running "$d" && printf '%s ' "$d"; done)"
       exit 1
     fi
     log "stopped (slurmctld, slurmd and munged are gone)"

@@ -1,40 +1,22 @@
 #include "json_file.h"
 
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <vector>
-#include <sstream>
 
 #include "core/errors.h"
+#include "core/user_file.h"
 
 namespace beverloo {
 
 nlohmann::json read_json_file(const std::string& path, std::string* text) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw ConfigError(path, "cannot read: no such file");
-  if (!fs::is_regular_file(st)) throw ConfigError(path, "is not a regular file (a directory, FIFO or device)");
-  const auto size = fs::file_size(path, ec);
-  if (ec) throw ConfigError(path, "cannot read: " + ec.message());
-  if (size > kMaxJsonFileBytes)
-    throw ConfigError(path, "is " + std::to_string(size) + " bytes, more than the limit of " +
-                                std::to_string(kMaxJsonFileBytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path, "cannot read the file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string s = ss.str();
+  const std::string s = read_user_file(path, kMaxJsonFileBytes);
   nlohmann::json j = parse_json_text(s, path);
   if (text) *text = s;
   return j;
 }
 
 nlohmann::json parse_json_text(const std::string& s, const std::string& path) {
-  if (s.size() > kMaxJsonFileBytes)
-    throw ConfigError(path, "is " + std::to_string(s.size()) + " bytes, more than the limit of " +
-                                std::to_string(kMaxJsonFileBytes));
+  if (s.size() > kMaxJsonFileBytes) throw ConfigError(path, too_large(s.size(), kMaxJsonFileBytes));
   nlohmann::json j;
   try {
     // The callback sees every nesting level while parsing, before a deep tree exists; and

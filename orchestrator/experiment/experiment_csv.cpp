@@ -3,13 +3,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include "core/digest.h"
 #include "core/errors.h"
+#include "core/user_file.h"
 
 namespace beverloo::experiment {
 namespace {
@@ -43,27 +42,10 @@ const std::set<std::string> kHeaderKeys = {"series", "provenance", "source", "ge
 
 }  // namespace
 
-ExperimentFile read_csv(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw ConfigError(path, "cannot read: no such file");
-  if (!fs::is_regular_file(st)) throw ConfigError(path, "is not a regular file (a directory, FIFO or device)");
-  const auto size = fs::file_size(path, ec);
-  if (ec) throw ConfigError(path, "cannot read: " + ec.message());
-  if (size > kMaxCsvBytes)
-    throw ConfigError(path, "is " + std::to_string(size) + " bytes, more than the limit of " + std::to_string(kMaxCsvBytes));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path, "cannot read the file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_csv_text(ss.str(), path);
-}
+ExperimentFile read_csv(const std::string& path) { return parse_csv_text(read_user_file(path, kMaxCsvBytes), path); }
 
 ExperimentFile parse_csv_text(const std::string& text, const std::string& path) {
-  if (text.size() > kMaxCsvBytes)
-    throw ConfigError(path, "is " + std::to_string(text.size()) + " bytes, more than the limit of " +
-                                std::to_string(kMaxCsvBytes));
+  if (text.size() > kMaxCsvBytes) throw ConfigError(path, too_large(text.size(), kMaxCsvBytes));
   ExperimentFile f;
   f.path = path;
   f.sha256 = sha256_hex(text);

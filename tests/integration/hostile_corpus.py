@@ -87,6 +87,15 @@ def reopen_attempt(camp, w):
     return d
 
 
+def remove_database(camp):
+    """Takes the campaign's database (and SQLite's files) away; returns its path."""
+    db = os.path.join(camp, "campaign.sqlite")
+    for ext in ("", "-wal", "-shm"):
+        if os.path.exists(db + ext):
+            os.remove(db + ext)
+    return db
+
+
 def prep(kind, work, case, camp):
     """Returns the input path {IN} for the case (or None)."""
     path = os.path.join(work, case + ".input")
@@ -123,20 +132,14 @@ def prep(kind, work, case, camp):
             f.write('{"name": "u", "base": {"N": 50, "W": 12, "zeta": 0.3, "mu": 0}, "sweep": '
                     + '{"union": [' * 200 + '{"w": [3]}' + "]}" * 200 + "}")
     elif kind == "foreign_db":
-        db = os.path.join(camp, "campaign.sqlite")
-        for ext in ("", "-wal", "-shm"):
-            if os.path.exists(db + ext):
-                os.remove(db + ext)
+        db = remove_database(camp)
         con = sqlite3.connect(db)
         con.execute("CREATE TABLE notes (t TEXT)")
         con.execute("INSERT INTO notes VALUES ('someone else''s')")
         con.commit()
         con.close()
     elif kind == "text_db":
-        db = os.path.join(camp, "campaign.sqlite")
-        for ext in ("", "-wal", "-shm"):
-            if os.path.exists(db + ext):
-                os.remove(db + ext)
+        db = remove_database(camp)
         with open(db, "w") as f:
             f.write("these are my notes, not a database\n" * 10)
     elif kind == "newer_db":
@@ -150,16 +153,10 @@ def prep(kind, work, case, camp):
             f.seek(4096)
             f.write(os.urandom(8192))
     elif kind == "db_dir":
-        db = os.path.join(camp, "campaign.sqlite")
-        for ext in ("", "-wal", "-shm"):
-            if os.path.exists(db + ext):
-                os.remove(db + ext)
+        db = remove_database(camp)
         os.mkdir(db)
     elif kind == "db_fifo":
-        db = os.path.join(camp, "campaign.sqlite")
-        for ext in ("", "-wal", "-shm"):
-            if os.path.exists(db + ext):
-                os.remove(db + ext)
+        db = remove_database(camp)
         os.mkfifo(db)
     elif kind.startswith("outcome_") or kind == "job_dir_file":
         d = reopen_attempt(camp, 4)

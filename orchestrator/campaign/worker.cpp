@@ -196,6 +196,20 @@ bool lock_within(int fd, double seconds, const std::atomic<bool>* stop) {
   return true;
 }
 
+
+
+/// What is wrong with a spec.json the coordinator should have written (empty: nothing): the
+/// fields the worker reads, with their types, so that a damaged one is a message, not an abort.
+std::string spec_problem(const nlohmann::json& s) {
+  if (!s.is_object()) return "is not a JSON object";
+  if (!s.contains("token") || !s["token"].is_string()) return "\"token\": missing or not a string";
+  if (!s.contains("attempt_no") || !s["attempt_no"].is_number_integer()) return "\"attempt_no\": missing or not an integer";
+  if (!s.contains("job") || !s["job"].is_object()) return "\"job\": missing or not an object";
+  if (s.contains("heartbeat_s") && !(s["heartbeat_s"].is_number() && s["heartbeat_s"].get<double>() > 0))
+    return "\"heartbeat_s\": not a positive number";
+  return "";
+}
+
 }  // namespace
 
 int run_worker(const std::string& spec_path) {
@@ -204,6 +218,10 @@ int run_worker(const std::string& spec_path) {
   if (!read_json(spec_path, spec)) {
     std::fprintf(stderr, "beverloo worker: cannot read %s\n", spec_path.c_str());
     return exit_code::kIo;
+  }
+  if (const std::string p = spec_problem(spec); !p.empty()) {
+    std::fprintf(stderr, "beverloo worker: %s: %s\n", spec_path.c_str(), p.c_str());
+    return exit_code::kConfig;
   }
   return run_attempt(dir, spec, install_stop_handlers());
 }
@@ -214,6 +232,20 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
   if (!read_json(manifest_path, manifest) || !manifest.contains("tasks") || !manifest.contains("root")) {
     std::fprintf(stderr, "beverloo worker: cannot read the manifest %s\n", manifest_path.c_str());
     return exit_code::kIo;
+  }
+  // the manifest's shape, before anything is read from it (a damaged one: a message, not an abort)
+  auto entries_ok = [](const nlohmann::json& list) {
+    if (!list.is_array()) return false;
+    for (const auto& e : list)
+      if (!e.is_object() || !e.contains("dir") || !e["dir"].is_string() || !e.contains("token") || !e["token"].is_string())
+        return false;
+    return true;
+  };
+  if (!manifest.is_object() || !manifest["tasks"].is_array() || !manifest["root"].is_string() ||
+      (task_index >= 0 && task_index < static_cast<int>(manifest["tasks"].size()) && !entries_ok(manifest["tasks"][task_index]))) {
+    std::fprintf(stderr, "beverloo worker: %s: not a manifest of {\"root\": text, \"tasks\": [[{\"dir\", \"token\"}, ...], ...]}\n",
+                 manifest_path.c_str());
+    return exit_code::kConfig;
   }
   const nlohmann::json& tasks = manifest.at("tasks");
   if (task_index < 0 || task_index >= static_cast<int>(tasks.size())) {
@@ -226,12 +258,18 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
     const std::string dir = (root / entry.at("dir").get<std::string>()).string();
     const std::string token = entry.at("token");
     auto current = [&](nlohmann::json& spec) {  // is this attempt still the job's current one?
-      return read_json((fs::path(dir) / job_files::kSpec).string(), spec) && spec.value("token", "") == token;
+      return read_json((fs::path(dir) / job_files::kSpec).string(), spec) && spec.is_object() && spec.contains("token") &&
+             spec["token"].is_string() && spec["token"].get<std::string>() == token;
     };
     nlohmann::json spec;
     if (!current(spec)) {
       // the coordinator has given this job to a newer attempt: this one must not run it
       std::fprintf(stderr, "beverloo worker: %s belongs to a newer attempt; skipped\n", dir.c_str());
+      continue;
+    }
+    if (const std::string p = spec_problem(spec); !p.empty()) {
+      std::fprintf(stderr, "beverloo worker: %s/%s: %s; skipped\n", dir.c_str(), job_files::kSpec, p.c_str());
+      status = exit_code::kConfig;
       continue;
     }
     const int lock = ::open((fs::path(dir) / job_files::kLock).c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);

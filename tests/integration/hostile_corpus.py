@@ -234,6 +234,10 @@ def main():
             shutil.copytree(reference, camp, symlinks=True)
             new, out = os.path.join(case_dir, "new"), os.path.join(case_dir, "out")
             path = prep(preparation, case_dir, name, camp) if preparation else input_of(name)
+            if path and path.startswith(os.path.join(DATA, "inputs")):
+                # a copy beside the case: whatever the command writes next to its input stays out of the repository
+                shutil.copy(path, case_dir)
+                path = os.path.join(case_dir, os.path.basename(path))
             strict = preparation in STRICT  # not ours: not even SQLite's files may appear
             before = snapshot(camp, strict)
             subst = {"{IN}": path or "", "{CAMP}": camp, "{SWEEP}": sweep, "{NEW}": new, "{OUT}": out}

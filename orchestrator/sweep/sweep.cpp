@@ -258,12 +258,19 @@ double evaluate(const std::string& expr, const Point& point, const std::string& 
   }
 }
 
-void set_field(json& job, const std::string& name, const json& value) {
+/// job.name = value, or job.group.field = value for a dotted name; path names the value's place
+/// in the sweep file for a group that is not one ({"": 1e5, ".x": 0}: found by the fuzzer).
+void set_field(json& job, const std::string& name, const json& value, const std::string& path) {
   const auto dot = name.find('.');
-  if (dot == std::string::npos)
+  if (dot == std::string::npos) {
     job[name] = value;
-  else
-    job[name.substr(0, dot)][name.substr(dot + 1)] = value;
+    return;
+  }
+  json& group = job[name.substr(0, dot)];
+  if (!group.is_null() && !group.is_object())
+    throw SweepError(path, "\"" + name.substr(0, dot) + "\" holds a value, not a group of parameters, so \"" + name +
+                               "\" cannot be set");
+  group[name.substr(dot + 1)] = value;
 }
 
 }  // namespace
@@ -391,12 +398,17 @@ std::vector<JobSpec> Sweep::expand() const {
     json job = base;
     job.erase("lambda");
     job.erase("dissipation_scale");
-    if (j.contains("run")) job["run"].update(j["run"]);
+    if (j.contains("run")) {
+      json& run = job["run"];
+      if (!run.is_null() && !run.is_object())
+        throw SweepError("base.run", show(run) + ": must be an object of run controls (as the top-level \"run\")");
+      run.update(j["run"]);
+    }
     const bool sets_zeta = (p.count("zeta") && p["zeta"].path.rfind("base.", 0) != 0) || derived_names.count("zeta");
     const bool sets_mu = (p.count("mu") && p["mu"].path.rfind("base.", 0) != 0) || derived_names.count("mu");
     for (auto& [name, t] : p) {
       if (name == "lambda" || name == "dissipation_scale") continue;
-      set_field(job, name, t.value);
+      set_field(job, name, t.value, t.path);
     }
     if (p.count("dissipation_scale")) spec.dissipation_scale = as_number(p["dissipation_scale"], "dissipation_scale");
     if (p.count("lambda")) {

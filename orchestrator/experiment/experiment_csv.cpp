@@ -57,6 +57,7 @@ ExperimentFile parse_csv_text(const std::string& text, const std::string& path) 
   std::set<std::string> finished;  // runs whose rows have ended (a run's rows are contiguous)
   RunData* run = nullptr;
   double last_t = 0, last_n = 0, t_start = 0;
+  std::size_t total_exits = 0;
   auto where = [&](const std::string& column) {
     return path + ":" + std::to_string(n) + (column.empty() ? "" : " column " + column);
   };
@@ -109,8 +110,9 @@ ExperimentFile parse_csv_text(const std::string& text, const std::string& path) 
     std::optional<double> count;
     if (f.counts) {
       count = to_number(cells[c_n]);
-      if (!count || *count < 0 || *count != std::floor(*count) || *count > 1e9)
-        throw ConfigError(where("N"), "must be a whole number of droplets >= 0, got \"" + cells[c_n] + "\"");
+      if (!count || *count < 0 || *count != std::floor(*count) || *count > kMaxDroplets)
+        throw ConfigError(where("N"), "must be a whole number of droplets from 0 to " +
+                                          std::to_string(static_cast<long long>(kMaxDroplets)) + ", got \"" + cells[c_n] + "\"");
     }
     if (!run || run->name != name) {
       if (finished.count(name))
@@ -137,9 +139,15 @@ ExperimentFile parse_csv_text(const std::string& text, const std::string& path) 
       if (*count > last_n)
         throw ConfigError(where("N"), "N rises from " + std::to_string(static_cast<long long>(last_n)) + " to " +
                                           cells[c_n] + ": a draining hopper's count only falls");
+      // the exits this row stands for, counted against the file's limit before any is stored
+      total_exits += static_cast<std::size_t>(last_n - *count);
+      if (total_exits > kMaxExits)
+        throw ConfigError(where("N"), "the file stands for more than " + std::to_string(kMaxExits) + " exits in all");
       for (double k = *count; k < last_n; k += 1) run->exit_t_s.push_back(*time - t_start);
       last_n = *count;
     } else {
+      if (++total_exits > kMaxExits)
+        throw ConfigError(where(""), "the file holds more than " + std::to_string(kMaxExits) + " exits in all");
       run->exit_t_s.push_back(*time - t_start);
       run->n_initial = static_cast<int>(run->exit_t_s.size());
     }

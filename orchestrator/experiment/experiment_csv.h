@@ -24,6 +24,10 @@ namespace beverloo::experiment {
 
 inline constexpr std::size_t kMaxCsvBytes = 256u << 20;  ///< 256 MiB
 inline constexpr double kStandardGravity = 9.80665;      ///< m/s^2
+/// A count N of one row: at most this many droplets (no hopper experiment holds more).
+inline constexpr double kMaxDroplets = 1e7;
+/// Exits of one file in all, counts included: their times are kept in memory (8 bytes each).
+inline constexpr std::size_t kMaxExits = 20'000'000;
 
 struct RunData {
   std::string name;

@@ -50,6 +50,12 @@ struct ParticleState {
     inv_mass[to] = inv_mass[from];
     exited[to] = exited[from];
   }
+  /// Takes item i out: the last item takes its place (indices above i are kept but for the last).
+  void remove_swapping_last(int i) {
+    const int last = size() - 1;
+    move(last, i);
+    truncate(last);
+  }
   /// Keeps the first n items (n <= size()); no reallocation.
   void truncate(int n) {
     x.resize(n);

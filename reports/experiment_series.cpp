@@ -11,8 +11,7 @@
 namespace beverloo {
 
 void add_experiment_series(db::Database& db, CampaignFits& out) {
-  if (db.scalar_int("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'experiment_series'") == 0)
-    return;  // a store from before the experiments (read-only readers do not migrate)
+  if (!db.has_table("experiment_series")) return;  // a store from before the experiments (readers do not migrate)
   db::Statement series = db.prepare("SELECT id, name, provenance, geometry FROM experiment_series ORDER BY id");
   db::Statement runs = db.prepare(
       "SELECT w, Q, Q_err FROM experiment_runs WHERE series_id = ?1 ORDER BY w, run");

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -64,16 +65,17 @@ CompletedRun read_completed(const std::string& dir, const SimConfig& c, const st
   const ResultCheck check = check_result(dir, c);
   if (check.state != ResultState::Complete)
     throw IoError(check.state == ResultState::None ? dir + ": no " + kResult : check.reason);
-  // the bytes the engine wrote, not bytes changed since (an edited summary, a copied result)
-  const std::map<std::string, std::string> now = result_digests(dir);
+  // the bytes the engine wrote, not bytes changed since (an edited summary, a copied result);
+  // the summary's bytes read for the check are the ones handed on
+  CompletedRun out;
   for (const char* name : {kResult, kSummary}) {
     const auto it = digests.find(name);
     if (it == digests.end()) throw IoError(dir + ": the outcome records no digest of " + name);
-    if (it->second != now.at(name))
+    std::string bytes = read_text(fs::path(dir) / name);
+    if (it->second != sha256_hex(bytes))
       throw IoError((fs::path(dir) / name).string() + " changed after the engine wrote it (its SHA-256 is not the one recorded)");
+    if (std::string_view(name) == kSummary) out.summary_json = std::move(bytes);
   }
-  CompletedRun out;
-  out.summary_json = read_text(fs::path(dir) / kSummary);
   H5Handle f = h5::open_file((fs::path(dir) / kResult).string());
   H5Handle g = h5::open_group(f, "profile");
   out.h = h5::read_doubles(g, "h");

@@ -28,9 +28,7 @@ class DpModel final : public HopperModel<2> {
   void reinjected(int i, ParticleState<2>& bodies, Rng& rng) override;
   void remove_body(int i, ParticleState<2>& bodies) override {
     dp_.remove_polygon(i);
-    const int last = bodies.size() - 1;
-    bodies.move(last, i);
-    bodies.truncate(last);
+    bodies.remove_swapping_last(i);
     bodies_list_.invalidate();
   }
   void body_friction(const ParticleState<2>&, VecArray<2>& out) override { dp_.body_friction(out); }

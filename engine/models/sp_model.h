@@ -25,9 +25,7 @@ class SpModel final : public HopperModel<D> {
   void check_step(const StepReport& r, double t, double max_overlap) const override;
   void reinjected(int, ParticleState<D>&, Rng&) override {}
   void remove_body(int i, ParticleState<D>& bodies) override {
-    const int last = bodies.size() - 1;
-    bodies.move(last, i);
-    bodies.truncate(last);
+    bodies.remove_swapping_last(i);
     ff_.list().invalidate();
   }
   void body_friction(const ParticleState<D>& bodies, VecArray<D>& out) override { ff_.contact().friction_forces(bodies, out); }

@@ -89,8 +89,6 @@ CampaignWriter::Prepared::Prepared(const std::string& dir, Open how) {
     std::error_code ec;
     fs::create_directories(dir, ec);  // jobs/ once the store is known to be ours
     if (ec) throw IoError("cannot create " + dir + ": " + ec.message());
-  } else if (!campaign_dir::holds_campaign(dir)) {
-    throw MissingCampaign(dir);
   }
 }
 

@@ -96,7 +96,8 @@ class Coordinator {
   void write_spec(const ClaimedJob& job) {
     const std::string dir = job_dir(job.dir);
     std::error_code ec;
-    if (fs::exists(fs::symlink_status(dir, ec)) && !fs::is_directory(fs::symlink_status(dir, ec))) {
+    const fs::file_status st = fs::symlink_status(dir, ec);
+    if (fs::exists(st) && !fs::is_directory(st)) {
       // something that is not a directory where the job's directory belongs (jobs/ is ours):
       // kept aside under another name, and the job runs again in a directory of its own
       const std::string aside = dir + ".not-a-directory";

@@ -115,10 +115,9 @@ CaseResult run_case(const BenchCase& bc, int runs) {
   const double median = rates[rates.size() / 2];
   CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
                  rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points()};
-  std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s-steps/s  (%d runs x %lld steps, dt %.3g)\n",
-              bc.id.c_str(), bc.description.c_str(), bc.config.skin, builds_per_kstep, median, rates.front(), rates.back(),
-              bc.config.is_dp() ? "vertex" : "particle", runs,
-              static_cast<long long>(bc.steps), warm.time_step().dt);
+  std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s  (%d runs x %lld steps, dt %.3g)\n",
+              out.id.c_str(), out.description.c_str(), out.skin, out.builds_per_kstep, out.median, out.min, out.max,
+              out.unit.c_str(), out.runs, static_cast<long long>(out.steps), out.dt);
   std::fflush(human);
   return out;
 }

@@ -41,6 +41,10 @@ class Database {
   sqlite3* handle() { return db_; }
   /// Single integer result of a query (e.g. a PRAGMA or COUNT(*)).
   std::int64_t scalar_int(const std::string& sql);
+  /// True if the schema has this table (a read-only reader of an older store may lack newer ones).
+  bool has_table(const std::string& name) {
+    return scalar_int("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = '" + name + "'") > 0;
+  }
   [[noreturn]] void fail(const std::string& context, int rc) const;
 
  private:

@@ -12,7 +12,7 @@ namespace beverloo::figures {
 ReportFigure drain_curves(const FigureContext& c) {
   Figure f("drain_curves", "Draining hoppers: droplets left N(t) with the fit dN/dt = -c0 N^(1/2) (a few runs)",
            "t / t0", "N (droplets in the hopper)");
-  if (c.db.scalar_int("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'experiment_runs'") == 0)
+  if (!c.db.has_table("experiment_runs"))
     return finish(f, c.dir, "no imported draining-hopper runs (`beverloo experiment import`)");
   struct Pick {
     std::int64_t id;

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# What the commands print, where docs/cli.md promises it: bench's JSON and its ratios to a
+# baseline (and a bad baseline refused naming the file), the progress line (no Q and no window
+# before the measurement window is open, never a window that ends before it starts), and
+# `campaign status` explaining each state and run ending present.
+source "$(dirname "$0")/lib.sh"
+
+# bench --json, then --baseline of that file with the JSON on stdout and the lines on stderr
+"$BIN" bench --case a --runs 1 --scale 0.01 --json "$WORK/base.json" > "$WORK/bench.txt" || fail "bench --json failed"
+grep -q "^bench: 1 case(s) x 1 runs; roughly" "$WORK/bench.txt" || fail "bench does not say first how long it takes"
+"$BIN" bench --case a --runs 1 --scale 0.01 --baseline "$WORK/base.json" --json - > "$WORK/new.json" 2> "$WORK/lines.txt" \
+  || fail "bench --baseline failed"
+grep -q "a: .* x the baseline's median" "$WORK/lines.txt" || fail "no ratio line: $(cat "$WORK/lines.txt")"
+python3 - "$WORK/new.json" <<'PY' || fail "bench --json - is not the documented JSON"
+import json, sys
+j = json.load(open(sys.argv[1]))
+c = j["cases"][0]
+assert c["id"] == "a" and c["unit"] == "particle-steps/s" and c["median"] > 0, c
+assert abs(c["ratio_to_baseline"] - c["median"] / c["baseline_median"]) < 1e-12, c
+PY
+echo '{"cases": [{"id": "a"}]}' > "$WORK/bad.json"
+set +e; "$BIN" bench --case a --baseline "$WORK/bad.json" > /dev/null 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "bad.json: a case lacks its \"id\" or \"median\"" "$WORK/err" || fail "bad baseline: rc $rc, $(cat "$WORK/err")"
+echo "ok  bench --json, --baseline, a bad baseline refused"
+
+# the progress line (terminal mode: a line every 0.25 s, split at its carriage returns):
+# transient first, then Q with a window that starts before it ends
+cat > "$WORK/job.json" <<'JOB'
+{"dimension": 2, "N": 1600, "W": 40, "w": 5, "zeta": 0.3, "mu": 0, "seed": 2,
+ "run": {"t_max": 60, "min_window": 15, "min_transient": 20, "target_rel_err": 1e-9, "check_interval": 5}}
+JOB
+"$BIN" simulate "$WORK/job.json" -o "$WORK/run" --progress terminal > /dev/null 2> "$WORK/raw"
+tr '\r' '\n' < "$WORK/raw" | sed 's/\x1b\[K//' > "$WORK/progress"
+grep -q "transient (no measurement window yet)" "$WORK/progress" || fail "no transient progress line: $(head -3 "$WORK/progress")"
+python3 - "$WORK/progress" <<'PY' || fail "a progress line shows a window that ends before it starts"
+import re, sys
+seen = 0
+for line in open(sys.argv[1]):
+    m = re.search(r"window (\d+)-(\d+)", line)
+    if m:
+        seen += 1
+        assert int(m.group(1)) < int(m.group(2)), line
+        assert "transient" not in line, line
+    elif "Q =" in line and line.startswith("t ="):
+        raise AssertionError("Q without its window: " + line)
+assert seen > 0, "no line with a window"
+PY
+echo "ok  progress lines: no Q before the window, windows in order"
+
+# campaign status explains the states and endings it shows
+cat > "$WORK/sweep.json" <<'JSON'
+{"name": "s", "base": {"N": 100, "W": 12, "zeta": 0.3, "mu": 0},
+ "run": {"t_max": 4, "min_window": 1, "min_transient": 1, "rate_bin": 0.1}, "sweep": {"w": [3, 4]}}
+JSON
+"$BIN" run "$WORK/sweep.json" --dir "$WORK/c" --workers 2 --progress quiet > /dev/null 2>&1 || fail "campaign failed"
+"$BIN" campaign status --dir "$WORK/c" > "$WORK/status"
+grep -q "^  done       finished; its result is stored" "$WORK/status" || fail "status does not explain 'done': $(cat "$WORK/status")"
+grep -qE "^runs ended   2 (converged|time_limit): " "$WORK/status" || fail "status does not explain the endings: $(cat "$WORK/status")"
+echo "ok  campaign status explains its states and endings"

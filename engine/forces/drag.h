@@ -26,24 +26,19 @@ class Drag final : public ForceTerm<D> {
   /// The coefficient of a species (force per velocity).
   double coefficient(int species) const { return c_[species]; }
   const std::array<double, 2>& coefficients() const { return c_; }
+  bool active() const { return on_ && (c_[0] != 0 || c_[1] != 0); }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
-    if (!on_ || (c_[0] == 0 && c_[1] == 0)) return {};
+    if (!active()) return {};
     double power = 0;
     const int n = s.size();
-    if (c_[0] == c_[1]) {  // one coefficient (zeta alone): no per-particle lookup in this loop
-      const double c = c_[0];
-      for (int i = 0; i < n; ++i) {
-        f[i] -= c * s.v[i];
-        power -= c * s.v[i].squaredNorm();
-      }
-      return {0, power};
-    }
-    for (int i = 0; i < n; ++i) {
-      const double c = c_[s.species[i]];
-      f[i] -= c * s.v[i];
-      power -= c * s.v[i].squaredNorm();
-    }
+    for (int i = 0; i < n; ++i) power += add_to(s, i, f[i]);
     return {0, power};
+  }
+  /// The drag on item i added to fi; returns its power -c |v|^2 (<= 0).
+  double add_to(const ParticleState<D>& s, int i, Vec<D>& fi) const {
+    const double c = c_[s.species[i]];
+    fi -= c * s.v[i];
+    return -c * s.v[i].squaredNorm();
   }
 
  private:

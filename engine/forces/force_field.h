@@ -35,15 +35,44 @@ class ForceField {
   /// Zeroes s.f, brings the list up to date and adds every term. O(N).
   ForceReport compute(ParticleState<D>& s) {
     list_.update(s, hopper_);
-    for (auto& fi : s.f) fi.setZero();
+    return evaluate(s);
+  }
+  /// compute() with the list as it is (the caller keeps it valid: SpModel::step).
+  ForceReport evaluate(ParticleState<D>& s) {
     ForceReport r;
+    // gravity and drag (Gravity::add_to, Drag::add_to written out) in one sweep that also
+    // clears the old forces, the walls (a few particles), then the pairs; the terms' own
+    // accumulate() give the same forces term by term (tests/physics/test_force_field.cpp)
+    const double g = gravity_.g();
+    const std::array<double, 2> drag = drag_.active() ? drag_.coefficients() : std::array<double, 2>{0, 0};
+    double U_gravity = 0, P_drag = 0;
+    const int n = s.size();
+    // plain doubles: a component write into an Eigen vector made GCC spill it to the stack and
+    // reload it whole, a store-forwarding stall per particle that cost more than the loop
+    const double* X = s.x.data()->data();
+    const double* V = s.v.data()->data();
+    double* F = s.f.data()->data();
+    for (int i = 0; i < n; ++i) {
+      const int sp = s.species[i];
+      const double m = s.sp.mass[sp], c = drag[sp];
+      double v2 = 0;
+      for (int d = 0; d < D; ++d) {
+        const double vd = V[i * D + d];
+        F[i * D + d] = -c * vd;
+        v2 += vd * vd;
+      }
+      F[i * D + kUp<D>] -= m * g;
+      U_gravity += m * g * X[i * D + kUp<D>];
+      P_drag -= c * v2;
+    }
+    const double U_wall = walls_.accumulate(s, s.f).energy;
     const TermOutput c = contact_.accumulate(s, s.f);
     r.U_contact = c.energy;
     r.P_friction = c.power;
     r.max_overlap = contact_.max_overlap();
-    r.U_wall = walls_.accumulate(s, s.f).energy;
-    r.U_gravity = gravity_.accumulate(s, s.f).energy;
-    r.P_drag = drag_.accumulate(s, s.f).power;
+    r.U_wall = U_wall;
+    r.U_gravity = U_gravity;
+    r.P_drag = P_drag;
     return r;
   }
   /// Dissipation off: FIRE minimises the potential energy only.
@@ -53,6 +82,7 @@ class ForceField {
   }
   void set_gravity(double g) { gravity_.set_g(g); }
   NeighborList<D>& list() { return list_; }
+  const NeighborList<D>& list() const { return list_; }
   const SpContact<D>& contact() const { return contact_; }
   /// The terms one by one (for the generic physics tests).
   std::vector<ForceTerm<D>*> terms() { return {&contact_, &walls_, &gravity_, &drag_}; }

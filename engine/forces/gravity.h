@@ -16,12 +16,14 @@ class Gravity final : public ForceTerm<D> {
     if (g_ == 0) return {};
     double energy = 0;
     const int n = s.size();
-    for (int i = 0; i < n; ++i) {
-      const double m = s.mass(i);
-      energy += m * g_ * s.x[i][kUp<D>];
-      f[i][kUp<D>] -= m * g_;
-    }
+    for (int i = 0; i < n; ++i) energy += add_to(s, i, f[i]);
     return {energy, 0};
+  }
+  /// Gravity on item i added to fi; returns its energy M g h.
+  double add_to(const ParticleState<D>& s, int i, Vec<D>& fi) const {
+    const double m = s.mass(i);
+    fi[kUp<D>] -= m * g_;
+    return m * g_ * s.x[i][kUp<D>];
   }
 
  private:

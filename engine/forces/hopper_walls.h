@@ -25,22 +25,26 @@ class HopperWalls final : public ForceTerm<D> {
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
     double energy = 0;
     const int n = s.size();
-    for (int i = 0; i < n; ++i) {
-      std::uint8_t mask = list_.wall_mask(i);
-      if (!mask) continue;
-      const double half = 0.5 * (own_diameters_ ? diameters_[s.species[i]] : s.sigma(i)), inv_half = 1.0 / half;
-      for (int w = 0; mask; ++w, mask >>= 1) {
-        if (!(mask & 1u)) continue;
-        const Vec<D> away = s.x[i] - hopper_.nearest_point(w, s.x[i]);
-        const double d2 = away.squaredNorm();
-        if (d2 >= half * half || d2 == 0) continue;
-        const double d = std::sqrt(d2);
-        double dU_dd;
-        energy += HarmonicOverlap::energy(eps_, d, inv_half, dU_dd);
-        f[i] += (-dU_dd / d) * away;
-      }
-    }
+    for (int i = 0; i < n; ++i) energy += add_to(s, i, f[i]);
     return {energy, 0};
+  }
+  /// The walls' force on item i added to fi; returns its energy (the fused SP pass calls this).
+  double add_to(const ParticleState<D>& s, int i, Vec<D>& fi) const {
+    std::uint8_t mask = list_.wall_mask(i);
+    if (!mask) return 0;
+    double energy = 0;
+    const double half = 0.5 * (own_diameters_ ? diameters_[s.species[i]] : s.sigma(i)), inv_half = 1.0 / half;
+    for (int w = 0; mask; ++w, mask >>= 1) {
+      if (!(mask & 1u)) continue;
+      const Vec<D> away = s.x[i] - hopper_.nearest_point(w, s.x[i]);
+      const double d2 = away.squaredNorm();
+      if (d2 >= half * half || d2 == 0) continue;
+      const double d = std::sqrt(d2);
+      double dU_dd;
+      energy += HarmonicOverlap::energy(eps_, d, inv_half, dU_dd);
+      fi += (-dU_dd / d) * away;
+    }
+    return energy;
   }
 
  private:

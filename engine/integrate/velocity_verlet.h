@@ -19,25 +19,49 @@ struct StepReport {
 /// forces are evaluated: where the protocol counts exits and reinjects particles, so that the
 /// forces of the step always belong to the final positions.
 /// FF is ForceField<D> or DpForceField (anything with ForceReport compute(ParticleState<D>&)).
-template <int D, class FF, class Hook>
-StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt, Hook&& between_drift_and_force) {
+/// The first half of a step: x += v dt + a dt^2/2, v += a dt/2 (a = f / m). Returns the largest
+/// squared displacement from `reference` (a Verlet list's build positions; empty: 0), taken in
+/// the same pass so that the list's rebuild test costs no second sweep over the positions.
+template <int D>
+double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference) {
   const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
   const int n = s.size();
+  double moved2 = 0;
+  const bool measure = static_cast<int>(reference.size()) == n;
   for (int i = 0; i < n; ++i) {
     const Vec<D> a = s.f[i] * s.inv_mass[i];
     s.x[i] += dt * s.v[i] + half_dt2 * a;
     s.v[i] += half_dt * a;
+    if (measure) {
+      const double d2 = (s.x[i] - reference[i]).squaredNorm();
+      moved2 = d2 > moved2 ? d2 : moved2;
+    }
   }
-  between_drift_and_force(s);  // may take items out (a draining hopper): count them again
-  StepReport r;
-  r.forces = ff.compute(s);
-  double checksum = 0;  // NaN or inf anywhere poisons the sum: one add per component
-  const int n_after = s.size();
-  for (int i = 0; i < n_after; ++i) {
+  return measure ? moved2 : 0.0;
+}
+
+/// The second half: v += f dt / (2 m) with the new forces. Returns whether every position and
+/// velocity is finite (NaN or inf anywhere poisons one running sum: one add per component).
+template <int D>
+bool kick(ParticleState<D>& s, double dt) {
+  const double half_dt = 0.5 * dt;
+  double checksum = 0;
+  const int n = s.size();
+  for (int i = 0; i < n; ++i) {
     s.v[i] += (half_dt * s.inv_mass[i]) * s.f[i];
     checksum += s.x[i].sum() + s.v[i].sum();
   }
-  r.finite = std::isfinite(checksum);
+  return std::isfinite(checksum);
+}
+
+template <int D, class FF, class Hook>
+StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt, Hook&& between_drift_and_force) {
+  static const VecArray<D> kNoReference;
+  drift(s, dt, kNoReference);
+  between_drift_and_force(s);  // may take items out (a draining hopper): the kick counts them again
+  StepReport r;
+  r.forces = ff.compute(s);
+  r.finite = kick(s, dt);
   ++s.step;
   return r;
 }

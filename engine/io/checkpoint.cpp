@@ -16,7 +16,7 @@ void HopperRun<D>::save_checkpoint(const std::string& target) const {
   {
     H5Handle f = h5::create_file(tmp);
     h5::attr(f, "format", std::string("beverloo-checkpoint"));
-    h5::attr(f, "format_version", std::int64_t{1});
+    h5::attr(f, "format_version", std::int64_t{2});  // 2: particle ids, the model's lists
     h5::attr(f, "engine_version", std::string(BEVERLOO_VERSION));
     h5::attr(f, "job_json", c_.to_json().dump());
     h5::attr(f, "step", s_.step);
@@ -31,6 +31,7 @@ void HopperRun<D>::save_checkpoint(const std::string& target) const {
     h5::write(p, "f", flatten<D>(s_.f), {hsize_t(s_.size()), hsize_t(D)});
     h5::write(p, "species", s_.species);
     h5::write(p, "exited", s_.exited);
+    h5::write(p, "id", std::vector<std::int64_t>(s_.id.begin(), s_.id.end()));
     model_->save_checkpoint(f);  // the model's own state (DP: the vertices)
     const auto& st = rng_.state();
     h5::write(f, "rng_state", std::vector<std::uint64_t>(st.begin(), st.end()));
@@ -69,8 +70,15 @@ void HopperRun<D>::load_checkpoint(const std::string& source) {
   unflatten<D>(h5::read_doubles(p, "f"), s_.f, "f");
   s_.species = h5::read_uint8(p, "species");
   s_.exited = h5::read_uint8(p, "exited");
-  if (static_cast<int>(s_.species.size()) != n || static_cast<int>(s_.exited.size()) != n)
+  const std::vector<std::int64_t> ids = h5::read_int64(p, "id");
+  if (static_cast<int>(s_.species.size()) != n || static_cast<int>(s_.exited.size()) != n ||
+      static_cast<int>(ids.size()) != n)
     throw IoError("checkpoint: particle arrays have the wrong size");
+  std::vector<std::uint8_t> seen(c_.N, 0);
+  for (int i = 0; i < n; ++i) {
+    if (ids[i] < 0 || ids[i] >= c_.N || seen[ids[i]]++) throw IoError("checkpoint: particle ids are not distinct ids below N");
+    s_.id[i] = static_cast<std::int32_t>(ids[i]);
+  }
   for (int i = 0; i < n; ++i) s_.inv_mass[i] = 1.0 / s_.sp.mass[s_.species[i]];
   model_->load_checkpoint(f, s_);
   s_.step = h5::attr_int64(f, "step");

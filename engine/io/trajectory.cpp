@@ -96,10 +96,13 @@ void H5mdTrajectory<D>::create(const std::string& path, const SimConfig& c, cons
     edges[D - 1] = box_height;
     h5::write(box, "edges", edges);
   }
-  std::vector<std::int32_t> species(s.species.begin(), s.species.end());
-  h5::write(all, "species", species);
+  std::vector<std::int32_t> species(s.size());
   std::vector<double> diameter(s.size());
-  for (int i = 0; i < s.size(); ++i) diameter[i] = s.sigma(i);
+  for (int i = 0; i < s.size(); ++i) {  // in id order, as the frames
+    species[s.id[i]] = s.species[i];
+    diameter[s.id[i]] = s.sigma(i);
+  }
+  h5::write(all, "species", species);
   h5::write(all, "diameter", diameter);
   H5Handle pos = h5::create_group(all, "position");
   extendible(pos, "step", H5T_NATIVE_INT64, {});
@@ -116,8 +119,9 @@ void H5mdTrajectory<D>::create(const std::string& path, const SimConfig& c, cons
 
 template <int D>
 void H5mdTrajectory<D>::write_frame(const ParticleState<D>& s, double time) {
+  // rows in id order: a model may keep its particles in another (SP sorts them by cell)
   for (int i = 0; i < s.size(); ++i)
-    for (int d = 0; d < D; ++d) buffer_[static_cast<std::size_t>(i) * D + d] = s.x[i][d];
+    for (int d = 0; d < D; ++d) buffer_[static_cast<std::size_t>(s.id[i]) * D + d] = s.x[i][d];
   append(file_, "particles/all/position/value", H5T_NATIVE_DOUBLE, buffer_.data(), frames_);
   const std::int64_t step = s.step;
   append(file_, "particles/all/position/step", H5T_NATIVE_INT64, &step, frames_);

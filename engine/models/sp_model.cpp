@@ -1,10 +1,12 @@
 #include "sp_model.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "core/errors.h"
 #include "../forces/harmonic_overlap.h"
+#include "../io/vec_io.h"
 #include "../protocol/placement.h"
 
 namespace beverloo {
@@ -53,7 +55,9 @@ template <int D>
 void SpModel<D>::start_flow(ParticleState<D>& bodies) {
   ff_.set_gravity(c_.gravity);
   ff_.set_dissipation(true);
-  ff_.list().invalidate();
+  // a resumed run continues with the list of its checkpoint (the same rebuilds, the same order)
+  if (!restored_list_) ff_.list().invalidate();
+  restored_list_ = false;
   // Forces at the start (or the resumed) state: identical to those the uninterrupted run holds,
   // because the pair sums do not depend on when the list was built (see neighbor_list.h).
   if (bodies.step == 0) ff_.compute(bodies);
@@ -61,8 +65,61 @@ void SpModel<D>::start_flow(ParticleState<D>& bodies) {
 
 template <int D>
 StepReport SpModel<D>::step(ParticleState<D>& bodies, double dt, StepHook<D>& hook) {
-  return velocity_verlet_step(bodies, ff_, dt,
-                              [&](ParticleState<D>& st) { hook.between_drift_and_force(st, ff_.list()); });
+  // velocity_verlet_step, with the list kept here: the drift measures the displacements, and a
+  // due rebuild sorts the particles by cell before the protocol counts exits (it holds no index
+  // across steps, and the exit records name ids)
+  NeighborList<D>& list = ff_.list();
+  const double moved2 = drift(bodies, dt, list.reference_positions());
+  if (list.due(moved2)) list.build_sorting(bodies, hopper_, sort_scratch_);
+  hook.between_drift_and_force(bodies, list);
+  if (list.forced()) list.build(bodies, hopper_);  // a relocation without room, a drained particle
+  StepReport r;
+  r.forces = ff_.evaluate(bodies);
+  r.finite = kick(bodies, dt);
+  ++bodies.step;
+  return r;
+}
+
+template <int D>
+void SpModel<D>::save_checkpoint(hid_t file) const {
+  const auto snap = ff_.list().snapshot();
+  H5Handle g = h5::create_group(file, "sp_list");
+  h5::attr(g, "force", std::int64_t{snap.force});
+  h5::attr(g, "builds", snap.builds);
+  if (snap.force) return;
+  h5::write(g, "x_ref", flatten<D>(snap.x_ref), {hsize_t(snap.x_ref.size()), hsize_t(D)});
+  h5::write(g, "row_start", std::vector<std::int32_t>(snap.row_start.begin(), snap.row_start.end()));
+  h5::write(g, "row_end", std::vector<std::int32_t>(snap.row_end.begin(), snap.row_end.end()));
+  h5::write(g, "nbr", std::vector<std::int32_t>(snap.nbr.begin(), snap.nbr.end()));
+  h5::write(g, "wall_mask", snap.wall_mask);
+}
+
+template <int D>
+void SpModel<D>::load_checkpoint(hid_t file, ParticleState<D>& bodies) {
+  H5Handle g = h5::open_group(file, "sp_list");
+  typename NeighborList<D>::Snapshot snap;
+  snap.force = h5::attr_int64(g, "force") != 0;
+  snap.builds = h5::attr_int64(g, "builds");
+  if (!snap.force) {
+    snap.x_ref.resize(bodies.size());
+    unflatten<D>(h5::read_doubles(g, "x_ref"), snap.x_ref, "sp_list/x_ref");
+    auto ints = [&](const char* name) {
+      const std::vector<std::int64_t> v = h5::read_int64(g, name);
+      for (std::int64_t k : v)
+        if (k < -1 || k > std::numeric_limits<int>::max()) throw IoError(std::string("checkpoint: sp_list/") + name + " out of range");
+      return std::vector<int>(v.begin(), v.end());
+    };
+    snap.row_start = ints("row_start");
+    snap.row_end = ints("row_end");
+    snap.nbr = ints("nbr");
+    snap.wall_mask = h5::read_uint8(g, "wall_mask");
+  }
+  try {
+    ff_.list().restore(std::move(snap), bodies.size());
+  } catch (const std::invalid_argument& e) {
+    throw IoError(std::string("checkpoint: ") + e.what());
+  }
+  restored_list_ = true;
 }
 
 template <int D>

@@ -37,8 +37,9 @@ class SpModel final : public HopperModel<D> {
   int body_of(int point) const override { return point; }
   ForceReport compute_forces(ParticleState<D>& bodies) override { return ff_.compute(bodies); }
   void copy_state_from(const HopperModel<D>&) override { ff_.list().invalidate(); }
-  void save_checkpoint(hid_t) const override {}  // the bodies are the whole state
-  void load_checkpoint(hid_t, ParticleState<D>&) override {}
+  /// The bodies are the state, and the list: its order and rebuild schedule shape the sums.
+  void save_checkpoint(hid_t file) const override;
+  void load_checkpoint(hid_t file, ParticleState<D>& bodies) override;
 
   ForceField<D>& forces() { return ff_; }
 
@@ -46,6 +47,8 @@ class SpModel final : public HopperModel<D> {
   SimConfig c_;
   const Hopper<D>& hopper_;
   ForceField<D> ff_;
+  ParticleState<D> sort_scratch_;  ///< the copies of a sort by cell (no allocation once warm)
+  bool restored_list_ = false;     ///< the list came from a checkpoint: start_flow keeps it
 };
 
 }  // namespace beverloo

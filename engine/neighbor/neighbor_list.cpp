@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace beverloo {
 
@@ -15,20 +17,8 @@ bool NeighborList<D>::moved_beyond_half_skin(const ParticleState<D>& s) const {
 }
 
 template <int D>
-void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) {
+void NeighborList<D>::bin(const ParticleState<D>& s) {
   const int n = s.size();
-  force_ = false;
-  ++builds_;
-  x_ref_.assign(s.x.begin(), s.x.end());
-
-  // Per species-pair squared list cutoff (sigma_ij + skin)^2.
-  double cut2[2][2];
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      const double c = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]) + skin_;
-      cut2[a][b] = c * c;
-    }
-
   // Bounding box and grid; a cell is at least the largest list cutoff wide.
   Vec<D> lo = Vec<D>::Constant(INFINITY), hi = Vec<D>::Constant(-INFINITY);
   for (int i = 0; i < n; ++i) {
@@ -39,13 +29,13 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
   if (extra_)
     for (int i = 0; i < n; ++i) max_extra = std::max(max_extra, (*extra_)[i]);
   double cell = std::max(s.sp.sigma[0], s.sp.sigma[1]) + 2 * max_extra + skin_;
-  std::array<int, 3> dims{1, 1, 1};
   long total = 1;
+  dims_ = {1, 1, 1};
   for (;;) {  // a blown-up particle far away must not make the grid huge: coarsen instead
     total = 1;
     for (int d = 0; d < D; ++d) {
-      dims[d] = std::max(1, static_cast<int>((hi[d] - lo[d]) / cell) + 1);
-      total *= dims[d];
+      dims_[d] = std::max(1, static_cast<int>((hi[d] - lo[d]) / cell) + 1);
+      total *= dims_[d];
     }
     if (total <= 4L * n + 64) break;
     cell *= 1.5;
@@ -57,22 +47,57 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     int c = 0;
     for (int d = D - 1; d >= 0; --d) {
       int k = static_cast<int>((s.x[i][d] - lo[d]) * inv_cell);
-      k = std::min(k, dims[d] - 1);
-      c = c * dims[d] + k;
+      k = std::min(k, dims_[d] - 1);
+      c = c * dims_[d] + k;
     }
     cell_of_[i] = c;
     ++cell_start_[c + 1];
   }
   for (long c = 0; c < total; ++c) cell_start_[c + 1] += cell_start_[c];
+}
+
+template <int D>
+void NeighborList<D>::start_build(const ParticleState<D>& s) {
+  force_ = false;
+  ++builds_;
+  x_ref_.assign(s.x.begin(), s.x.end());
+  const int n = s.size();
+  row_start_.resize(n + 1);
+  row_end_.resize(n);
+  nbr_.clear();
+  wall_mask_.resize(n);
+}
+
+template <int D>
+void NeighborList<D>::end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
+  row_end_[i] = static_cast<int>(nbr_.size());
+  nbr_.insert(nbr_.end(), kRowSlack, -1);  // room for relocate()
+  // walls within reach of this particle until the next build
+  const double reach = 0.5 * s.sp.sigma[s.species[i]] + skin_;
+  std::uint8_t mask = 0;
+  for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
+    if ((s.x[i] - hopper.nearest_point(w, s.x[i])).squaredNorm() < reach * reach) mask |= std::uint8_t(1u << w);
+  wall_mask_[i] = mask;
+}
+
+template <int D>
+void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) {
+  const int n = s.size();
+  start_build(s);
+  bin(s);
+  // Per species-pair squared list cutoff (sigma_ij + skin)^2.
+  double cut2[2][2];
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const double c = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]) + skin_;
+      cut2[a][b] = c * c;
+    }
   cell_items_.resize(n);
   // fill in index order so that each cell lists its particles in increasing index
   cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
   for (int i = 0; i < n; ++i) cell_items_[cursor_[cell_of_[i]]++] = i;
 
-  row_start_.resize(n + 1);
-  row_end_.resize(n);
-  nbr_.clear();
-  wall_mask_.assign(n, 0);
+  const auto& dims = dims_;
   for (int i = 0; i < n; ++i) {
     row_start_[i] = static_cast<int>(nbr_.size());
     const Vec<D> xi = s.x[i];
@@ -104,16 +129,96 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
           }
         }
     std::sort(nbr_.begin() + row_start_[i], nbr_.end());
-    row_end_[i] = static_cast<int>(nbr_.size());
-    nbr_.insert(nbr_.end(), kRowSlack, -1);  // room for relocate()
-    // walls within reach of this particle until the next build
-    const double reach = 0.5 * s.sp.sigma[si] + skin_;
-    std::uint8_t mask = 0;
-    for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
-      if ((xi - hopper.nearest_point(w, xi)).squaredNorm() < reach * reach) mask |= std::uint8_t(1u << w);
-    wall_mask_[i] = mask;
+    end_row(i, s, hopper);
   }
   row_start_[n] = static_cast<int>(nbr_.size());
+}
+
+template <int D>
+void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper, ParticleState<D>& scratch) {
+  if (group_ || extra_) {  // items tied to others by index (polygons) keep their order
+    build(s, hopper);
+    return;
+  }
+  const int n = s.size();
+  bin(s);
+  // counting sort by cell, stable: slot k of the new order holds old item order_[k]
+  order_.resize(n);
+  cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  for (int i = 0; i < n; ++i) order_[cursor_[cell_of_[i]]++] = i;
+  s.permute(order_, scratch);
+  start_build(s);
+
+  double cut2[2][2];
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const double c = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]) + skin_;
+      cut2[a][b] = c * c;
+    }
+  // Cell cc now holds the items cell_start_[cc] .. cell_start_[cc + 1] - 1, and every item of a
+  // later cell has a higher index: the j > i of row i are the later items of i's own cell and
+  // the items of the neighbour cells after it, visited in increasing cell (so index) order.
+  const auto& dims = dims_;
+  const long plane = long(dims[0]) * dims[1];
+  int cell = 0;
+  for (int i = 0; i < n; ++i) {
+    while (cell_start_[cell + 1] <= i) ++cell;
+    row_start_[i] = static_cast<int>(nbr_.size());
+    const Vec<D> xi = s.x[i];
+    const double* cut_i = cut2[s.species[i]];
+    auto scan = [&](int from, int to) {
+      for (int j = from; j < to; ++j)
+        if ((xi - s.x[j]).squaredNorm() < cut_i[s.species[j]]) nbr_.push_back(j);
+    };
+    const int c0 = cell % dims[0];
+    const int c1 = (cell / dims[0]) % dims[1];
+    const int c2 = D == 3 ? int(cell / plane) : 0;
+    const int lo0 = c0 > 0 ? -1 : 0, hi0 = c0 < dims[0] - 1 ? 1 : 0;
+    // own cell after i, and the next cell in the same grid row
+    scan(i + 1, cell_start_[cell + 1 + hi0]);
+    // the grid row above (and in 3D the whole plane above): three cells, contiguous in index
+    auto scan_row = [&](long row_first) {  // row_first: the cell at c0 in that grid row
+      scan(cell_start_[row_first + lo0], cell_start_[row_first + hi0 + 1]);
+    };
+    if (c1 < dims[1] - 1) scan_row(cell + dims[0]);
+    if constexpr (D == 3) {
+      if (c2 < dims[2] - 1)
+        for (int d1 = -1; d1 <= 1; ++d1) {
+          const int r1 = c1 + d1;
+          if (r1 < 0 || r1 >= dims[1]) continue;
+          scan_row(cell + plane + long(d1) * dims[0]);
+        }
+    }
+    end_row(i, s, hopper);
+  }
+  row_start_[n] = static_cast<int>(nbr_.size());
+}
+
+template <int D>
+void NeighborList<D>::restore(Snapshot snap, int n) {
+  force_ = true;
+  const auto bad = [](const std::string& what) { throw std::invalid_argument("neighbour list: " + what); };
+  builds_ = snap.builds;
+  if (snap.force) return;  // a rebuild was due anyway
+  if (int(snap.x_ref.size()) != n || int(snap.row_start.size()) != n + 1 || int(snap.row_end.size()) != n ||
+      int(snap.wall_mask.size()) != n)
+    bad("arrays of the wrong size");
+  const int total = static_cast<int>(snap.nbr.size());
+  for (int i = 0; i < n; ++i) {
+    if (snap.row_start[i] < 0 || snap.row_start[i] > snap.row_end[i] || snap.row_end[i] > snap.row_start[i + 1] ||
+        snap.row_start[i + 1] > total)
+      bad("row bounds out of order");
+    for (int k = snap.row_start[i]; k < snap.row_end[i]; ++k)
+      if (snap.nbr[k] <= i || snap.nbr[k] >= n) bad("an entry outside 0 .. N-1 or not above its row");
+  }
+  if (snap.row_start[n] != total) bad("row bounds out of order");
+  x_ref_ = std::move(snap.x_ref);
+  row_start_ = std::move(snap.row_start);
+  row_end_ = std::move(snap.row_end);
+  nbr_ = std::move(snap.nbr);
+  wall_mask_ = std::move(snap.wall_mask);
+  builds_ = snap.builds;
+  force_ = false;
 }
 
 template <int D>

@@ -28,6 +28,31 @@ class NeighborList {
     return true;
   }
   void build(const ParticleState<D>& s, const Hopper<D>& hopper);
+  /// Sorts the items by cell first (s is reordered: s.permute, through scratch), then builds:
+  /// memory order follows space, so that the force loops find their neighbours in cache, and
+  /// each row comes out in increasing index from half the neighbour cells. The SP model's build.
+  void build_sorting(ParticleState<D>& s, const Hopper<D>& hopper, ParticleState<D>& scratch);
+  /// Whether the list must be rebuilt, given the largest squared displacement of any item since
+  /// the last build (see reference_positions()).
+  bool due(double max_moved2) const { return force_ || max_moved2 > 0.25 * skin_ * skin_; }
+  /// Whether a rebuild has been forced (invalidate(), a relocation without room).
+  bool forced() const { return force_; }
+  /// Positions at the last build (a relocated item: at its relocation); empty before any build.
+  const VecArray<D>& reference_positions() const { return x_ref_; }
+
+  /// Everything the list holds, for a checkpoint: a resumed run continues with the very list
+  /// (and so the rebuild schedule and item order) of the uninterrupted one.
+  struct Snapshot {
+    VecArray<D> x_ref;
+    std::vector<int> row_start, row_end, nbr;
+    std::vector<std::uint8_t> wall_mask;
+    bool force = true;
+    std::int64_t builds = 0;
+  };
+  Snapshot snapshot() const { return {x_ref_, row_start_, row_end_, nbr_, wall_mask_, force_, builds_}; }
+  /// Restores a snapshot of a list over n items; throws std::invalid_argument naming what does
+  /// not fit (a damaged checkpoint) and leaves the list forced to rebuild.
+  void restore(Snapshot snap, int n);
   /// Items with equal group ids are not listed as pairs (vertices of one polygon); the vectors
   /// must outlive the list. nullptr: all pairs (SP particles). With `first` (group g holds items
   /// first[g] .. first[g+1]-1, a ring) and ring >= 0, only pairs of one group at most `ring`
@@ -66,6 +91,11 @@ class NeighborList {
 
  private:
   bool moved_beyond_half_skin(const ParticleState<D>& s) const;
+  /// The cell grid over s's bounding box: dims_, cell_of_, cell_start_ (prefix sums).
+  void bin(const ParticleState<D>& s);
+  void start_build(const ParticleState<D>& s);
+  /// Closes row i (its slack, its wall mask).
+  void end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper);
 
   bool excluded(int i, int j) const {
     if (!group_) return false;
@@ -91,7 +121,8 @@ class NeighborList {
   static constexpr int kRowSlack = 4;
   std::vector<std::uint8_t> wall_mask_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing
-  std::vector<int> cell_of_, cell_start_, cell_items_, cursor_;
+  std::vector<int> cell_of_, cell_start_, cell_items_, cursor_, order_;
+  std::array<int, 3> dims_{1, 1, 1};
 };
 
 }  // namespace beverloo

@@ -30,10 +30,10 @@ class ExitCounter {
       if (!s.exited[i]) {
         if (h >= 0) continue;
         if (Hopper<D>::lateral(s.x[i]) > half_w + slack_)
-          throw InstabilityError("particle " + std::to_string(i) + " crossed the orifice plane through the wall at t = " +
+          throw InstabilityError("particle " + std::to_string(s.id[i]) + " crossed the orifice plane through the wall at t = " +
                                  std::to_string(t));
         rec.exit_time.push_back(t);
-        rec.exit_particle.push_back(i);
+        rec.exit_particle.push_back(s.id[i]);
         rec.exit_size.push_back(s.sp.ref_size[s.species[i]]);
         rec.last_exit_time = t;
         s.exited[i] = 1;

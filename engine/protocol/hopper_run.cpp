@@ -65,6 +65,22 @@ template <int D>
 HopperRun<D>::~HopperRun() = default;
 
 template <int D>
+void HopperRun<D>::start_over() {
+  // everything a checkpoint load writes, as the constructor left it
+  s_ = ParticleState<D>{};
+  model_ = make_model<D>(c_, hopper_);
+  exits_.set_lateral_slack(model_->lateral_slack());
+  if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
+  rng_ = Rng(c_.effective_seed());
+  rec_ = FlowRecord{};
+  obs_ = FlowObservables<D>(c_);
+  wall_seconds_before_ = 0;
+  resumed_times_ = 0;
+  fire_iterations_ = 0;
+  fire_max_force_ = 0;
+}
+
+template <int D>
 std::string HopperRun<D>::path(const std::string& name) const {
   return (std::filesystem::path(opt_.output_dir) / name).string();
 }
@@ -101,8 +117,23 @@ void HopperRun<D>::place_and_minimize() {
 template <int D>
 void HopperRun<D>::prepare() {
   const bool have_dir = !opt_.output_dir.empty();
+  bool resumed = false;
   if (have_dir && opt_.resume && std::filesystem::exists(path("checkpoint.h5"))) {
-    load_checkpoint(path("checkpoint.h5"));
+    try {
+      load_checkpoint(path("checkpoint.h5"));
+      resumed = true;
+    } catch (const std::exception& e) {
+      // damaged, another job's, or from an engine whose state differs: set it aside (kept for
+      // whoever wants to look) and start the job over; the result is the same as a fresh run's
+      const std::string aside = path("checkpoint.h5.unusable");
+      std::error_code ec;
+      std::filesystem::rename(path("checkpoint.h5"), aside, ec);
+      if (ec) throw IoError("checkpoint.h5 cannot be read (" + std::string(e.what()) + ") nor moved aside: " + ec.message());
+      std::fprintf(stderr, "checkpoint.h5 cannot be used (%s): moved to checkpoint.h5.unusable; starting over\n", e.what());
+      start_over();
+    }
+  }
+  if (resumed) {
     ++resumed_times_;
     if (opt_.progress != ProgressMode::Quiet)
       std::fprintf(stderr, "resumed from checkpoint.h5 at step %lld (resume %d)\n", static_cast<long long>(s_.step), resumed_times_);
@@ -186,7 +217,7 @@ void HopperRun<D>::check_containment() const {
     if (!hopper_.contains(s_.x[i]) || s_.x[i][kUp<D>] > ceiling_ ||
         s_.x[i][kUp<D>] < -(c_.reinjection.drop_depth_diameters + 10) * s_.sigma(i)) {
       std::ostringstream m;
-      m << "particle " << i << " left the container at t = " << time() << " (position " << s_.x[i].transpose() << ")";
+      m << "particle " << s_.id[i] << " left the container at t = " << time() << " (position " << s_.x[i].transpose() << ")";
       throw InstabilityError(m.str());
     }
   }

@@ -90,6 +90,8 @@ class HopperRun : private StepHook<D> {
   /// over the DP bodies), between drift and force evaluation.
   void reinject_exited(NeighborList<D>& list);
   void place_and_minimize();
+  /// Back to the state of a fresh run (an unusable checkpoint was partly read).
+  void start_over();
   void check_containment() const;
   /// Height above which a particle counts as escaped upward; returns the current top.
   double set_ceiling();

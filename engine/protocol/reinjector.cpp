@@ -152,7 +152,8 @@ bool Reinjector<D>::reinject_in_lane(ParticleState<D>& s, int i, std::int64_t pl
   s.x[i] = p;
   s.v[i] = Vec<D>::Zero();
   s.v[i][kUp<D>] = -v_new;
-  s.v[i][0] = lanes::kSideways * v_down * (i % 2 ? -1.0 : 1.0);
+  // the code alternates the sign with the particle's number: its id here (the slot changes)
+  s.v[i][0] = lanes::kSideways * v_down * (s.id[i] % 2 ? -1.0 : 1.0);
   s.exited[i] = 0;
   return !lifted;
 }

@@ -39,40 +39,60 @@ class ForceField {
   }
   /// compute() with the list as it is (the caller keeps it valid: SpModel::step).
   ForceReport evaluate(ParticleState<D>& s) {
-    ForceReport r;
-    // gravity and drag (Gravity::add_to, Drag::add_to written out) in one sweep that also
-    // clears the old forces, the walls (a few particles), then the pairs; the terms' own
-    // accumulate() give the same forces term by term (tests/physics/test_force_field.cpp)
+    // Block by block (the list's blocks, neighbor_list.h), on threads_ threads: each block
+    // owns its particles' forces. Per particle: gravity and drag (Gravity::add_to and
+    // Drag::add_to written out) in a sweep that also clears the old force, the walls, then
+    // the pairs. The terms' own accumulate() give the same forces term by term
+    // (tests/physics/test_force_field.cpp), and every thread count the same bits.
+    contact_.prepare(s);
+    const int nb = list_.blocks();
+    partial_.resize(nb);
     const double g = gravity_.g();
     const std::array<double, 2> drag = drag_.active() ? drag_.coefficients() : std::array<double, 2>{0, 0};
-    double U_gravity = 0, P_drag = 0;
-    const int n = s.size();
     // plain doubles: a component write into an Eigen vector made GCC spill it to the stack and
     // reload it whole, a store-forwarding stall per particle that cost more than the loop
     const double* X = s.x.data()->data();
     const double* V = s.v.data()->data();
     double* F = s.f.data()->data();
-    for (int i = 0; i < n; ++i) {
-      const int sp = s.species[i];
-      const double m = s.sp.mass[sp], c = drag[sp];
-      double v2 = 0;
-      for (int d = 0; d < D; ++d) {
-        const double vd = V[i * D + d];
-        F[i * D + d] = -c * vd;
-        v2 += vd * vd;
+#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
+    for (int b = 0; b < nb; ++b) {
+      // sums in locals, stored once: accumulated in partial_[b] they made a store and reload
+      // on every particle's dependency chain
+      double U_gravity = 0, P_drag = 0, U_wall = 0;
+      const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
+      for (int i = lo; i < hi; ++i) {
+        const int sp = s.species[i];
+        const double m = s.sp.mass[sp], c = drag[sp];
+        double v2 = 0;
+        for (int d = 0; d < D; ++d) {
+          const double vd = V[i * D + d];
+          F[i * D + d] = -c * vd;
+          v2 += vd * vd;
+        }
+        F[i * D + kUp<D>] -= m * g;
+        U_gravity += m * g * X[i * D + kUp<D>];
+        P_drag -= c * v2;
       }
-      F[i * D + kUp<D>] -= m * g;
-      U_gravity += m * g * X[i * D + kUp<D>];
-      P_drag -= c * v2;
+      for (int i = lo; i < hi; ++i)
+        if (list_.wall_mask(i)) U_wall += walls_.add_to(s, i, s.f[i]);
+      BlockPartial& out = partial_[b];
+      out.contact = contact_.block(s, s.f, b);
+      out.U_gravity = U_gravity;
+      out.P_drag = P_drag;
+      out.U_wall = U_wall;
     }
-    const double U_wall = walls_.accumulate(s, s.f).energy;
-    const TermOutput c = contact_.accumulate(s, s.f);
+    typename SpContact<D>::BlockSums contact;
+    ForceReport r;
+    for (const BlockPartial& p : partial_) {  // in block order, whatever the threads
+      contact.add(p.contact);
+      r.U_wall += p.U_wall;
+      r.U_gravity += p.U_gravity;
+      r.P_drag += p.P_drag;
+    }
+    const TermOutput c = contact_.finish(contact);
     r.U_contact = c.energy;
     r.P_friction = c.power;
     r.max_overlap = contact_.max_overlap();
-    r.U_wall = U_wall;
-    r.U_gravity = U_gravity;
-    r.P_drag = P_drag;
     return r;
   }
   /// Dissipation off: FIRE minimises the potential energy only.
@@ -81,6 +101,9 @@ class ForceField {
     drag_.set_enabled(on);
   }
   void set_gravity(double g) { gravity_.set_g(g); }
+  /// Threads for evaluate() (1: none); results are the same bits for every count.
+  void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+  int threads() const { return threads_; }
   NeighborList<D>& list() { return list_; }
   const NeighborList<D>& list() const { return list_; }
   const SpContact<D>& contact() const { return contact_; }
@@ -94,6 +117,12 @@ class ForceField {
   Gravity<D> gravity_;
   Drag<D> drag_;
   const Hopper<D>& hopper_;
+  int threads_ = 1;
+  struct BlockPartial {
+    typename SpContact<D>::BlockSums contact;
+    double U_wall = 0, U_gravity = 0, P_drag = 0;
+  };
+  std::vector<BlockPartial> partial_;  ///< one per block, kept between evaluations
 };
 
 }  // namespace beverloo

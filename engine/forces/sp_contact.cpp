@@ -7,6 +7,19 @@
 namespace beverloo {
 
 template <int D>
+void SpContact<D>::prepare(const ParticleState<D>& s) {
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const double sig = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]);
+      sig2_[a][b] = sig * sig;
+      inv_sig_[a][b] = 1.0 / sig;
+      eps_ab_[a][b] = scale_with_sigma_ ? eps_ * sig : eps_;
+      k_[a][b] = eps_ab_[a][b] * inv_sig_[a][b];
+    }
+  list_.update_incoming();
+}
+
+template <int D>
 void SpContact<D>::friction_forces(const ParticleState<D>& s, VecArray<D>& out) const {
   const int n = s.size();
   out.assign(n, Vec<D>::Zero());

@@ -22,12 +22,36 @@ template <int D>
 class SpContact final : public ForceTerm<D> {
  public:
   /// scale_with_sigma: the pair's energy scale is E_sp sigma_mn (sp_contact_law "force")
-  SpContact(const NeighborList<D>& list, double E_sp, FrictionLaw friction, bool scale_with_sigma = false)
+  SpContact(NeighborList<D>& list, double E_sp, FrictionLaw friction, bool scale_with_sigma = false)
       : list_(list), eps_(E_sp), law_(friction), scale_with_sigma_(scale_with_sigma) {}
   std::string_view name() const override { return "sp_contact"; }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
-    if (!friction_on_ || !law_.active()) return loop<Friction::None>(s, f);
-    return law_.split() ? loop<Friction::Split>(s, f) : loop<Friction::Full>(s, f);
+    prepare(s);
+    BlockSums total;
+    for (int b = 0; b < list_.blocks(); ++b) total.add(block(s, f, b));
+    return finish(total);
+  }
+  /// What one block of the list adds up besides forces; added in block order (never in the
+  /// order threads finish), so that the totals too are the same for every thread count.
+  struct BlockSums {
+    double energy = 0, power = 0, max_overlap = 0;
+    void add(const BlockSums& o) {
+      energy += o.energy;
+      power += o.power;
+      max_overlap = o.max_overlap > max_overlap ? o.max_overlap : max_overlap;
+    }
+  };
+  /// Before block(): the species tables and the list's incoming lists (serial).
+  void prepare(const ParticleState<D>& s);
+  /// The pairs of block b of the list: forces on the block's own items only, so blocks can
+  /// run on different threads (neighbor_list.h, blocks()).
+  BlockSums block(const ParticleState<D>& s, VecArray<D>& f, int b) const {
+    if (!friction_on_ || !law_.active()) return loop<Friction::None>(s, f, b);
+    return law_.split() ? loop<Friction::Split>(s, f, b) : loop<Friction::Full>(s, f, b);
+  }
+  TermOutput finish(const BlockSums& total) {
+    max_overlap_ = total.max_overlap;
+    return {total.energy, total.power};
   }
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<D>& s, VecArray<D>& out) const;
@@ -42,7 +66,14 @@ class SpContact final : public ForceTerm<D> {
  private:
   enum class Friction { None, Full, Split };
   template <Friction kFriction>
-  TermOutput loop(const ParticleState<D>& s, VecArray<D>& f);
+  BlockSums loop(const ParticleState<D>& s, VecArray<D>& f, int b) const;
+  /// The force on i from j (dx = x_i - x_j, r2 = |dx|^2 < sigma_ij^2) into fij; the energy and
+  /// friction power of the pair into sums. Exactly antisymmetric: from j's side (dx and the
+  /// velocities negated) every operation gives the negated value, so a pair evaluated by two
+  /// blocks adds opposite forces.
+  template <Friction kFriction>
+  [[gnu::always_inline]] inline void pair_force(const double* vi, const double* vj, const double* dx, double r2, int si, int sj, bool rub,
+                  double* fij, double& energy, double& power, double& max_overlap) const;
   /// The friction force on i from j (dx = x_i - x_j, r = |dx|); kSplit: the split law.
   template <bool kSplit>
   Vec<D> friction_on(const ParticleState<D>& s, int i, int j, const Vec<D>& dx, double r) const {
@@ -50,7 +81,7 @@ class SpContact final : public ForceTerm<D> {
     return kinetic_friction_force<D>(law_.mu_t, s.v[i], s.v[j]);
   }
 
-  const NeighborList<D>& list_;
+  NeighborList<D>& list_;  ///< not const: prepare() brings its incoming lists up to date
   double eps_;
   FrictionLaw law_;
   bool scale_with_sigma_;
@@ -58,21 +89,49 @@ class SpContact final : public ForceTerm<D> {
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
   double max_overlap_ = 0;
+  // species-pair tables (prepare()): contact distance^2, its inverse, the energy scale, and
+  // the energy scale over the contact distance
+  double sig2_[2][2], inv_sig_[2][2], eps_ab_[2][2], k_[2][2];
 };
 
 template <int D>
 template <typename SpContact<D>::Friction kFriction>
-TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
-  // species-pair tables: contact distance^2, its inverse, the energy scale over it
-  double sig2[2][2], inv_sig[2][2], eps[2][2], k[2][2];
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      const double sig = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]);
-      sig2[a][b] = sig * sig;
-      inv_sig[a][b] = 1.0 / sig;
-      eps[a][b] = scale_with_sigma_ ? eps_ * sig : eps_;
-      k[a][b] = eps[a][b] * inv_sig[a][b];
+[[gnu::always_inline]] inline void SpContact<D>::pair_force(const double* vi, const double* vj, const double* dx, double r2, int si, int sj,
+                              bool rub, double* fij, double& energy, double& power,
+                                                                   double& max_overlap) const {
+  const double r = std::sqrt(r2);
+  // HarmonicOverlap, written out: U = (eps/2) ov^2, ov = 1 - r/sigma, |F| = eps ov / sigma
+  const double ov = 1.0 - r * inv_sig_[si][sj];
+  energy += 0.5 * eps_ab_[si][sj] * ov * ov;
+  max_overlap = ov > max_overlap ? ov : max_overlap;
+  const double scale = k_[si][sj] * ov / r;
+  for (int d = 0; d < D; ++d) fij[d] = scale * dx[d];  // on i, along x_i - x_j (repulsive)
+  if constexpr (kFriction != Friction::None) {
+    if (rub) {
+      double dv[D], ff[D];
+      for (int d = 0; d < D; ++d) dv[d] = vi[d] - vj[d];
+      if constexpr (kFriction == Friction::Split) {  // kinetic_friction.h, the split law
+        const double inv_r = 1.0 / r;
+        double dv_dot_n = 0;
+        for (int d = 0; d < D; ++d) dv_dot_n += dv[d] * (dx[d] * inv_r);
+        for (int d = 0; d < D; ++d) {
+          const double dvn = dv_dot_n * (dx[d] * inv_r);
+          ff[d] = -law_.mu_n * dvn - law_.mu_t * (dv[d] - dvn);
+        }
+      } else {
+        for (int d = 0; d < D; ++d) ff[d] = -law_.mu_t * dv[d];
+      }
+      for (int d = 0; d < D; ++d) {
+        power += ff[d] * dv[d];
+        fij[d] += ff[d];
+      }
     }
+  }
+}
+
+template <int D>
+template <typename SpContact<D>::Friction kFriction>
+typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f, int b) const {
   // Plain component arithmetic on the arrays' doubles (a Vec<D> is D packed doubles): the
   // compiler keeps i's sums in registers, where Eigen temporaries taken by reference were
   // spilled to the stack and reloaded with a store-forwarding stall per pair.
@@ -80,14 +139,14 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
   const double* V = s.v.data()->data();
   double* F = f.data()->data();
   const std::uint8_t* species = s.species.data();
-  const double mu_n = law_.mu_n, mu_t = law_.mu_t;
+  const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
+  // the sums in locals (registers): accumulated into the returned struct they lived in memory,
+  // a store and reload on every pair's dependency chain
   double energy = 0, power = 0, max_ov = 0;
-  const int n = s.size();
-  for (int i = 0; i < n; ++i) {
-    double xi[D], vi[D], fi[D];
+  for (int i = lo; i < hi; ++i) {
+    double xi[D], fi[D];
     for (int d = 0; d < D; ++d) {
       xi[d] = X[i * D + d];
-      vi[d] = V[i * D + d];
       fi[d] = 0;
     }
     const int si = species[i];
@@ -99,46 +158,48 @@ TermOutput SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f) {
         r2 += dx[d] * dx[d];
       }
       const int sj = species[j];
-      if (r2 >= sig2[si][sj]) continue;
-      const double r = std::sqrt(r2);
-      // HarmonicOverlap, written out: U = (eps/2) ov^2, ov = 1 - r/sigma, |F| = eps ov / sigma
-      const double ov = 1.0 - r * inv_sig[si][sj];
-      energy += 0.5 * eps[si][sj] * ov * ov;
-      max_ov = ov > max_ov ? ov : max_ov;
-      const double scale = k[si][sj] * ov / r;
-      double fij[D];  // on i, along x_i - x_j (repulsive), plus friction
-      for (int d = 0; d < D; ++d) fij[d] = scale * dx[d];
-      if constexpr (kFriction != Friction::None) {
-        if (rubs(i, j)) {
-          double dv[D];
-          for (int d = 0; d < D; ++d) dv[d] = vi[d] - V[j * D + d];
-          double ff[D];
-          if constexpr (kFriction == Friction::Split) {  // kinetic_friction.h, the split law
-            const double inv_r = 1.0 / r;
-            double dv_dot_n = 0;
-            for (int d = 0; d < D; ++d) dv_dot_n += dv[d] * (dx[d] * inv_r);
-            for (int d = 0; d < D; ++d) {
-              const double dvn = dv_dot_n * (dx[d] * inv_r);
-              ff[d] = -mu_n * dvn - mu_t * (dv[d] - dvn);
-            }
-          } else {
-            for (int d = 0; d < D; ++d) ff[d] = -mu_t * dv[d];
-          }
-          for (int d = 0; d < D; ++d) {
-            power += ff[d] * dv[d];
-            fij[d] += ff[d];
-          }
-        }
-      }
-      for (int d = 0; d < D; ++d) {
-        fi[d] += fij[d];
-        F[j * D + d] -= fij[d];
-      }
+      if (r2 >= sig2_[si][sj]) continue;
+      double fij[D];
+      pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, rubs(i, j), fij, energy, power, max_ov);
+      for (int d = 0; d < D; ++d) fi[d] += fij[d];
+      if (j < hi)  // j is this block's: its share now; else j's block adds it (incoming)
+        for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
     }
     for (int d = 0; d < D; ++d) F[i * D + d] += fi[d];
   }
-  max_overlap_ = max_ov;
-  return {energy, power};
+  if (lo > 0) {
+    // pairs with items of earlier blocks, seen from this block's side (energy and power were
+    // counted by the earlier block: into a sink here)
+    double sink_energy = 0, sink_power = 0, sink_max = 0;
+    for (const int* q = list_.receivers_begin(b), *q_end = list_.receivers_end(b); q != q_end; ++q) {
+      const int j = *q;
+      double xj[D], fj[D];
+      for (int d = 0; d < D; ++d) {
+        xj[d] = X[j * D + d];
+        fj[d] = 0;
+      }
+      const int sj = species[j];
+      for (const int* p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
+        const int i = *p;
+        double dx[D], r2 = 0;
+        for (int d = 0; d < D; ++d) {
+          dx[d] = xj[d] - X[i * D + d];
+          r2 += dx[d] * dx[d];
+        }
+        const int si = species[i];
+        if (r2 >= sig2_[sj][si]) continue;
+        double fji[D];
+        pair_force<kFriction>(V + j * D, V + i * D, dx, r2, sj, si, rubs(j, i), fji, sink_energy, sink_power, sink_max);
+        for (int d = 0; d < D; ++d) fj[d] += fji[d];
+      }
+      for (int d = 0; d < D; ++d) F[j * D + d] += fj[d];
+    }
+  }
+  BlockSums sums;
+  sums.energy = energy;
+  sums.power = power;
+  sums.max_overlap = max_ov;
+  return sums;
 }
 
 }  // namespace beverloo

@@ -22,12 +22,14 @@ struct StepReport {
 /// The first half of a step: x += v dt + a dt^2/2, v += a dt/2 (a = f / m). Returns the largest
 /// squared displacement from `reference` (a Verlet list's build positions; empty: 0), taken in
 /// the same pass so that the list's rebuild test costs no second sweep over the positions.
+/// threads: OpenMP threads for the loop (each item's update is its own: any count, same bits).
 template <int D>
-double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference) {
+double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference, int threads = 1) {
   const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
   const int n = s.size();
   double moved2 = 0;
   const bool measure = static_cast<int>(reference.size()) == n;
+#pragma omp parallel for schedule(static) reduction(max : moved2) num_threads(threads) if (threads > 1)
   for (int i = 0; i < n; ++i) {
     const Vec<D> a = s.f[i] * s.inv_mass[i];
     s.x[i] += dt * s.v[i] + half_dt2 * a;
@@ -43,10 +45,11 @@ double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference) {
 /// The second half: v += f dt / (2 m) with the new forces. Returns whether every position and
 /// velocity is finite (NaN or inf anywhere poisons one running sum: one add per component).
 template <int D>
-bool kick(ParticleState<D>& s, double dt) {
+bool kick(ParticleState<D>& s, double dt, int threads = 1) {
   const double half_dt = 0.5 * dt;
-  double checksum = 0;
+  double checksum = 0;  // only its finiteness is used: any summation order will do
   const int n = s.size();
+#pragma omp parallel for schedule(static) reduction(+ : checksum) num_threads(threads) if (threads > 1)
   for (int i = 0; i < n; ++i) {
     s.v[i] += (half_dt * s.inv_mass[i]) * s.f[i];
     checksum += s.x[i].sum() + s.v[i].sum();

@@ -79,6 +79,9 @@ class HopperModel {
   /// Forces of the model's current state (lists and search bounds brought up to date); the
   /// bodies follow (DP: centroids). For tests and diagnostics that edit term_state().
   virtual ForceReport compute_forces(ParticleState<D>& bodies) = 0;
+  /// Threads for step() (1: none); a model without threaded loops ignores it. The results
+  /// must not depend on it.
+  virtual void set_threads(int) {}
   /// Take over another run's model state (benchmarks); lists are rebuilt.
   virtual void copy_state_from(const HopperModel& other) = 0;
 

@@ -69,13 +69,14 @@ StepReport SpModel<D>::step(ParticleState<D>& bodies, double dt, StepHook<D>& ho
   // due rebuild sorts the particles by cell before the protocol counts exits (it holds no index
   // across steps, and the exit records name ids)
   NeighborList<D>& list = ff_.list();
-  const double moved2 = drift(bodies, dt, list.reference_positions());
+  const double moved2 = drift(bodies, dt, list.reference_positions(), ff_.threads());
   if (list.due(moved2)) list.build_sorting(bodies, hopper_, sort_scratch_);
   hook.between_drift_and_force(bodies, list);
-  if (list.forced()) list.build(bodies, hopper_);  // a relocation without room, a drained particle
+  // a relocation without room, a drained particle: the exits are done with their indices
+  if (list.forced()) list.build_sorting(bodies, hopper_, sort_scratch_);
   StepReport r;
   r.forces = ff_.evaluate(bodies);
-  r.finite = kick(bodies, dt);
+  r.finite = kick(bodies, dt, ff_.threads());
   ++bodies.step;
   return r;
 }

@@ -41,6 +41,7 @@ class SpModel final : public HopperModel<D> {
   void save_checkpoint(hid_t file) const override;
   void load_checkpoint(hid_t file, ParticleState<D>& bodies) override;
 
+  void set_threads(int threads) override { ff_.set_threads(threads); }
   ForceField<D>& forces() { return ff_; }
 
  private:

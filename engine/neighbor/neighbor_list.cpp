@@ -57,7 +57,41 @@ void NeighborList<D>::bin(const ParticleState<D>& s) {
 }
 
 template <int D>
+void NeighborList<D>::update_incoming() {
+  if (!incoming_stale_) return;
+  incoming_stale_ = false;
+  const int n = static_cast<int>(row_end_.size());
+  in_start_.assign(n + 2, 0);
+  in_items_.clear();
+  const int nb = blocks();
+  receivers_.clear();
+  receivers_start_.assign(nb + 1, 0);
+  if (nb == 1) return;
+  // counting pass, then fill: rows in increasing i, so each incoming list is increasing
+  for (int b = 0; b < nb; ++b) {
+    const int hi = block_begin(b + 1);
+    for (int i = block_begin(b); i < hi; ++i)
+      for (const int* p = row_begin(i); p != row_end(i); ++p)
+        if (*p >= hi) ++in_start_[*p + 2];
+  }
+  for (int j = 0; j < n; ++j) in_start_[j + 2] += in_start_[j + 1];
+  in_items_.resize(in_start_[n + 1]);
+  for (int b = 0; b < nb; ++b) {
+    const int hi = block_begin(b + 1);
+    for (int i = block_begin(b); i < hi; ++i)
+      for (const int* p = row_begin(i); p != row_end(i); ++p)
+        if (*p >= hi) in_items_[in_start_[*p + 1]++] = i;
+  }
+  for (int b = 0; b < nb; ++b) {
+    for (int j = block_begin(b), hi = block_begin(b + 1); j < hi; ++j)
+      if (in_start_[j + 1] > in_start_[j]) receivers_.push_back(j);
+    receivers_start_[b + 1] = static_cast<int>(receivers_.size());
+  }
+}
+
+template <int D>
 void NeighborList<D>::start_build(const ParticleState<D>& s) {
+  incoming_stale_ = true;
   force_ = false;
   ++builds_;
   x_ref_.assign(s.x.begin(), s.x.end());
@@ -219,11 +253,13 @@ void NeighborList<D>::restore(Snapshot snap, int n) {
   wall_mask_ = std::move(snap.wall_mask);
   builds_ = snap.builds;
   force_ = false;
+  incoming_stale_ = true;
 }
 
 template <int D>
 void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
   if (force_) return;  // a rebuild is due anyway
+  incoming_stale_ = true;
   const int n = s.size();
   // out: its own row, and its entries in the rows of lower-numbered particles
   row_end_[i] = row_start_[i];

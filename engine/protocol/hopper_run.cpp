@@ -52,6 +52,7 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       estimator_(c.run),
       pile_finder_(c.N) {
   model_ = make_model<D>(c_, hopper_);
+  model_->set_threads(opt_.threads);
   body_drag_ = drag_coefficients(c_.zeta, c_.drag_rate, Species::bidisperse(D, c_.size_ratio).mass);
   exits_.set_lateral_slack(model_->lateral_slack());
   if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
@@ -69,6 +70,7 @@ void HopperRun<D>::start_over() {
   // everything a checkpoint load writes, as the constructor left it
   s_ = ParticleState<D>{};
   model_ = make_model<D>(c_, hopper_);
+  model_->set_threads(opt_.threads);
   exits_.set_lateral_slack(model_->lateral_slack());
   if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
   rng_ = Rng(c_.effective_seed());

@@ -45,6 +45,10 @@ struct RunOptions {
   /// hours of wall time; a checkpoint at any step resumes bit-identically, so this changes no
   /// result, only how much work a SIGKILL or a lost node can cost.
   double checkpoint_wall_seconds = 600;
+  /// Threads for the run's steps (SP: the force blocks and the integrator's loops; DP: none
+  /// yet). Every count gives the same result, bit for bit: the forces are summed in an order
+  /// that the particle count alone fixes (neighbor_list.h, blocks).
+  int threads = 1;
 };
 
 template <int D>

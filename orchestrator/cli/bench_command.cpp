@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "core/cpus.h"
 #include "engine/json_file.h"
 #include "engine/models/model_time_step.h"
 #include "engine/protocol/hopper_run.h"
@@ -90,17 +91,20 @@ struct CaseResult {
   double median = 0, min = 0, max = 0, dt = 0, builds_per_kstep = 0, skin = 0;
   int runs = 0;
   std::int64_t steps = 0, points = 0;
+  int threads = 1;
 };
 
 template <int D>
-CaseResult run_case(const BenchCase& bc, int runs) {
-  HopperRun<D> warm(bc.config, RunOptions{});
+CaseResult run_case(const BenchCase& bc, int runs, int threads) {
+  RunOptions options;
+  options.threads = threads;
+  HopperRun<D> warm(bc.config, options);
   warm.prepare();
   warm.advance(std::llround(bc.warmup_time / warm.time_step().dt));
   std::vector<double> rates;
   double builds_per_kstep = 0;
   for (int r = 0; r < runs; ++r) {
-    HopperRun<D> run = HopperRun<D>(bc.config, RunOptions{});
+    HopperRun<D> run = HopperRun<D>(bc.config, options);
     run.prepare();
     // every timed run starts from the same warmed-up state
     run.copy_state_from(warm);
@@ -114,10 +118,11 @@ CaseResult run_case(const BenchCase& bc, int runs) {
   std::sort(rates.begin(), rates.end());
   const double median = rates[rates.size() / 2];
   CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
-                 rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points()};
-  std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s  (%d runs x %lld steps, dt %.3g)\n",
+                 rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points(),
+                 threads};
+  std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s  (%d runs x %lld steps, dt %.3g, %d thread%s)\n",
               out.id.c_str(), out.description.c_str(), out.skin, out.builds_per_kstep, out.median, out.min, out.max,
-              out.unit.c_str(), out.runs, static_cast<long long>(out.steps), out.dt);
+              out.unit.c_str(), out.runs, static_cast<long long>(out.steps), out.dt, threads, threads == 1 ? "" : "s");
   std::fflush(human);
   return out;
 }
@@ -125,7 +130,7 @@ CaseResult run_case(const BenchCase& bc, int runs) {
 nlohmann::json to_json(const CaseResult& r) {
   return {{"id", r.id}, {"description", r.description}, {"unit", r.unit}, {"median", r.median}, {"min", r.min},
           {"max", r.max}, {"runs", r.runs}, {"steps_per_run", r.steps}, {"moving_points", r.points}, {"dt", r.dt},
-          {"skin", r.skin}, {"list_builds_per_1000_steps", r.builds_per_kstep}};
+          {"skin", r.skin}, {"list_builds_per_1000_steps", r.builds_per_kstep}, {"threads", r.threads}};
 }
 
 /// The medians of an earlier `bench --json` by case id; ConfigError naming the file if unreadable.
@@ -163,6 +168,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
     double scale = 1.0;
     double skin = 0;
     std::string json_out, baseline;
+    int threads = 1;
   };
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("bench", "Standard performance cases: particle-steps per second");
@@ -172,9 +178,12 @@ void add_bench_command(CLI::App& app, int& exit_status) {
   cmd->add_option("--skin", a->skin, "Verlet skin (default: the job default)")->check(CLI::PositiveNumber);
   cmd->add_option("--json", a->json_out, "also write the results as JSON to this file (- for stdout)");
   cmd->add_option("--baseline", a->baseline, "an earlier --json output: print each case's ratio to it");
+  cmd->add_option("--threads", a->threads, "threads per run (SP cases; the same results for every count)")
+      ->capture_default_str();
   cmd->callback([a, &exit_status] {
     exit_status = guarded("bench", [&] {
     human = a->json_out == "-" ? stderr : stdout;
+    check_threads("--threads", a->threads);
     const std::map<std::string, double> baseline = a->baseline.empty() ? std::map<std::string, double>{} : read_baseline(a->baseline);
     std::vector<BenchCase> chosen;
     for (const BenchCase& bc : standard_cases(a->scale, a->skin))
@@ -188,7 +197,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
     const auto start = std::chrono::steady_clock::now();
     nlohmann::json cases = nlohmann::json::array();
     for (const BenchCase& bc : chosen) {
-      const CaseResult r = bc.config.dimension == 2 ? run_case<2>(bc, a->runs) : run_case<3>(bc, a->runs);
+      const CaseResult r = bc.config.dimension == 2 ? run_case<2>(bc, a->runs, a->threads) : run_case<3>(bc, a->runs, a->threads);
       cases.push_back(to_json(r));
       const auto it = baseline.find(r.id);
       if (it != baseline.end() && it->second > 0) {

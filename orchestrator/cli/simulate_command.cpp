@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "core/cpus.h"
 #include "engine/models/model_time_step.h"
 #include "engine/protocol/memory_estimate.h"
 #include "engine/io/job_output.h"
@@ -26,6 +27,7 @@ struct SimulateArgs {
   bool json = false;
   double checkpoint_wall_seconds = 600;
   std::string progress = "auto";
+  int threads = 1;
 };
 
 SimConfig read_job(const std::string& path) { return SimConfig::from_json(read_json_file(path)); }
@@ -56,6 +58,7 @@ int run_simulate(const SimulateArgs& a) {
     c = read_job(a.job_path);
     (void)choose_time_step(c);  // refuse an unstable explicit dt before anything is written
     check_memory(c);            // and a job this machine cannot hold
+    check_threads("--threads", a.threads);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
     return exit_code::kConfig;
@@ -104,6 +107,7 @@ int run_simulate(const SimulateArgs& a) {
                  : a.progress == "quiet"  ? ProgressMode::Quiet
                                           : ProgressMode::Auto;
   opt.checkpoint_wall_seconds = a.checkpoint_wall_seconds;
+  opt.threads = a.threads;
   opt.stop_request = install_stop_handlers();
   // failure.json for people; the class and the exit code come from the one table
   auto fail = [&](FailureClass cls, const char* what, const std::string& message) {
@@ -150,6 +154,9 @@ void add_simulate_command(CLI::App& app, int& exit_status) {
                   "also checkpoint after this many wall seconds since the last checkpoint (0: only every "
                   "run.checkpoint_interval of simulated time); results do not depend on it")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads,
+                  "threads for this job's steps (SP); every count gives the same result, bit for bit")
       ->capture_default_str();
   cmd->add_option("--progress", args->progress, "auto | terminal | log | quiet")
       ->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));

@@ -147,8 +147,8 @@ TEST(Sweep, JobKeysAreStableGoldenValues) {
   const auto jobs = expand({{"base", {{"N", 400}, {"W", 25}, {"E_sp", 100}}},
                             {"sweep", {{"product", {{{"lambda", {0, "inf"}}}, {{"w", {3, 8}}}}}}}});
   EXPECT_EQ(jobs[0].key.size(), 64u);
-  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.2.0");
-  EXPECT_EQ(jobs[0].key, "cecf1a532566a8a8fc2e634f23382af80ece0c55b95feea3db54ebcc7789c427");
+  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.3.0");
+  EXPECT_EQ(jobs[0].key, "edbc07c393dd7741ad01b37b1d709514228bd5fa4074bec3d8de0418deeb86d1");
 }
 
 TEST(Sweep, KeyIsSensitiveToEveryParameterButNotToRunBookkeeping) {

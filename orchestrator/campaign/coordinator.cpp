@@ -1,5 +1,6 @@
 #include "coordinator.h"
 #include "core/atomic_file.h"
+#include "core/cpus.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -109,6 +110,7 @@ class Coordinator {
                                  {"attempt_no", job.attempt_no},
                                  {"token", job.token},
                                  {"heartbeat_s", o_.heartbeat_s},
+                                 {"threads", o_.threads},
                                  {"job", nlohmann::json::parse(job.job_json)}};
     write_text_atomically((fs::path(dir) / job_files::kSpec).string(), spec.dump(2) + "\n");
   }
@@ -270,7 +272,13 @@ class Coordinator {
 
 int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOptions& opt) {
   CampaignOptions o = opt;
-  if (o.workers <= 0) o.workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // threads per job: locally workers x threads must fit the cores (oversubscribed threads only
+  // slow every job down); on Slurm each array task asks for them (--cpus-per-task)
+  if (o.threads < 1) throw ConfigError("--threads", "must be at least 1");
+  if (o.workers <= 0) o.workers = std::max(1, usable_cpus() / o.threads);
+  // (more single-threaded workers than cores stays allowed, as before: they only queue)
+  if (o.executor == "local" && o.threads > 1) check_threads("--threads", o.threads, o.workers);
+  o.slurm.cpus_per_task = o.threads;
   if (o.progress == ProgressMode::Auto) o.progress = isatty(STDERR_FILENO) ? ProgressMode::Terminal : ProgressMode::Log;
   // Parse and expand before touching the directory: a bad sweep writes nothing.
   std::optional<Sweep> sweep;

@@ -15,7 +15,8 @@ namespace beverloo {
 
 struct CampaignOptions {
   std::string dir = "campaign";
-  int workers = 0;           ///< 0: the number of cores
+  int workers = 0;           ///< 0: the number of cores over threads
+  int threads = 1;           ///< threads per job (results do not depend on it); local: workers x threads <= cores
   int max_retries = 2;       ///< science retries per job (blow-up, I/O); infrastructure ones are free
   int max_infra_retries = 50;  ///< guard against endless kill loops
   double job_timeout_s = 0;  ///< wall seconds per attempt (0: none); then SIGTERM, checkpoint, resume later

@@ -15,6 +15,7 @@
 #include "engine/io/job_output.h"
 #include "engine/protocol/hopper_run.h"
 #include "job_files.h"
+#include "core/cpus.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
 #include "store.h"
@@ -129,6 +130,9 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
     opt.progress = ProgressMode::Log;
     opt.stop_request = stop;
     opt.progress_step = &step;
+    // the threads asked for, but never more than this process may run on (a node that grants
+    // fewer CPUs): the result is the same for every count
+    opt.threads = std::min(static_cast<int>(spec.value("threads", std::int64_t{1})), usable_cpus());
     const RunResult r = run_hopper(c, opt);
     if (r.status == "interrupted") return finish(FailureClass::Interrupted, r.stop_reason);
     out.files = job_output::result_digests(dir);  // the bytes just written, for the coordinator to check
@@ -207,6 +211,9 @@ std::string spec_problem(const nlohmann::json& s) {
   if (!s.contains("job") || !s["job"].is_object()) return "\"job\": missing or not an object";
   if (s.contains("heartbeat_s") && !(s["heartbeat_s"].is_number() && s["heartbeat_s"].get<double>() > 0))
     return "\"heartbeat_s\": not a positive number";
+  if (s.contains("threads") && !(s["threads"].is_number_integer() && s["threads"].get<std::int64_t>() >= 1 &&
+                                 s["threads"].get<std::int64_t>() <= 4096))
+    return "\"threads\": not an integer from 1 to 4096";
   return "";
 }
 

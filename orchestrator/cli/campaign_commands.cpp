@@ -188,7 +188,12 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   };
   auto add_run_options = [&](CLI::App* cmd) {
     cmd->add_option("--dir", opts->dir, "campaign directory (default: campaigns/<sweep name>)");
-    cmd->add_option("--workers", opts->workers, "worker processes (default: the number of cores)")->check(CLI::Range(1, 4096));
+    cmd->add_option("--workers", opts->workers, "worker processes (default: the number of cores over --threads)")
+        ->check(CLI::Range(1, 4096));
+    cmd->add_option("--threads", opts->threads,
+                    "threads per job (SP; the same results for every count): locally workers x threads must fit the "
+                    "cores, on Slurm each task asks --cpus-per-task=THREADS (default 1)")
+        ->check(CLI::Range(1, 4096));
     cmd->add_option("--max-retries", opts->max_retries, "retries per job for blow-ups and I/O errors")->check(CLI::Range(0, 100));
     cmd->add_option("--job-timeout", opts->job_timeout_s, "wall seconds per attempt; then checkpoint and resume later");
     cmd->add_option("--heartbeat", opts->heartbeat_s, "seconds between heartbeat records of live workers (default 30)")
@@ -253,6 +258,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   CLI::App* crun = campaign->add_subcommand("run", "Run the jobs of an existing campaign that are not done");
   crun->add_option("--dir", opts->dir, "campaign directory");
   crun->add_option("--workers", opts->workers, "worker processes");
+  crun->add_option("--threads", opts->threads, "threads per job (as for run)")->check(CLI::Range(1, 4096));
   crun->add_option("--progress", *progress, "auto | terminal | log | quiet");
   crun->add_option("--heartbeat", opts->heartbeat_s, "seconds between heartbeats of live workers (default 30)")->check(CLI::PositiveNumber);
   add_executor_options(crun);

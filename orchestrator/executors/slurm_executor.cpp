@@ -126,7 +126,8 @@ void SlurmExecutor::submit_chunk(const std::vector<ClaimedJob>& jobs, const std:
   std::vector<std::string> args = {"sbatch", "--parsable", "--job-name=" + name, "--array=" + array,
                                    "--output=" + (sub_dir / "%A_%a.out").string(), "--open-mode=append",
                                    "--signal=B:USR1@" + std::to_string(options_.signal_lead_s), "--requeue",
-                                   "--ntasks=1", "--cpus-per-task=1", "--chdir=" + dir_};
+                                   "--ntasks=1", "--cpus-per-task=" + std::to_string(options_.cpus_per_task),
+                                   "--chdir=" + dir_};
   if (!options_.partition.empty()) args.push_back("--partition=" + options_.partition);
   if (!options_.time_limit.empty()) args.push_back("--time=" + options_.time_limit);
   for (const std::string& a : options_.sbatch_args) args.push_back(a);

@@ -15,6 +15,7 @@ struct SlurmOptions {
   double bundle_target_s = 600;    ///< auto bundling: estimated seconds of work per array task
   int signal_lead_s = 120;         ///< --signal=B:USR1@lead: checkpoint this long before the time limit
   int max_in_flight = 10000;       ///< attempts submitted and not yet ended
+  int cpus_per_task = 1;           ///< --cpus-per-task: the threads of each job (run --threads)
   double poll_min_s = 2;           ///< squeue polling interval after a change ...
   double poll_max_s = 60;          ///< ... doubling while nothing changes, up to this
   double result_grace_s = 30;      ///< a task that ended without a result file: wait this long (NFS lag)

@@ -51,9 +51,11 @@ class ForceField {
     const std::array<double, 2> drag = drag_.active() ? drag_.coefficients() : std::array<double, 2>{0, 0};
     // plain doubles: a component write into an Eigen vector made GCC spill it to the stack and
     // reload it whole, a store-forwarding stall per particle that cost more than the loop
-    const double* X = s.x.data()->data();
-    const double* V = s.v.data()->data();
-    double* F = s.f.data()->data();
+    const double* __restrict X = s.x.data()->data();
+    const double* __restrict V = s.v.data()->data();
+    double* __restrict F = s.f.data()->data();
+    const std::uint8_t* __restrict species = s.species.data();
+    const std::array<double, 2> mass = s.sp.mass;
 #pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
     for (int b = 0; b < nb; ++b) {
       // sums in locals, stored once: accumulated in partial_[b] they made a store and reload
@@ -61,8 +63,8 @@ class ForceField {
       double U_gravity = 0, P_drag = 0, U_wall = 0;
       const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
       for (int i = lo; i < hi; ++i) {
-        const int sp = s.species[i];
-        const double m = s.sp.mass[sp], c = drag[sp];
+        const int sp = species[i];
+        const double m = mass[sp], c = drag[sp];
         double v2 = 0;
         for (int d = 0; d < D; ++d) {
           const double vd = V[i * D + d];

@@ -15,6 +15,7 @@
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
 #include "kinetic_friction.h"
+#include "sp_pairs_sse2.h"
 
 namespace beverloo {
 
@@ -56,6 +57,8 @@ class SpContact final : public ForceTerm<D> {
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<D>& s, VecArray<D>& out) const;
   void set_friction_enabled(bool on) { friction_on_ = on; }
+  /// The 2D rows two pairs at a time (default) or one by one: the same forces, for the tests.
+  void set_simd(bool on) { simd_ = on; }
   /// Pairs of one group (vertices of one rough polygon in self-contact) repel but do not rub:
   /// kinetic friction acts between particles (physics.md 4). nullptr: every pair rubs.
   void set_friction_groups(const std::vector<int>* group) { friction_group_ = group; }
@@ -67,6 +70,12 @@ class SpContact final : public ForceTerm<D> {
   enum class Friction { None, Full, Split };
   template <Friction kFriction>
   BlockSums loop(const ParticleState<D>& s, VecArray<D>& f, int b) const;
+  /// 2D rows two pairs at a time (sp_pairs_sse2.h): the same forces, bit for bit.
+  template <Friction kFriction>
+  BlockSums rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo, int hi) const;
+  /// The pairs of block b with items of earlier blocks, from the block's side (forces only).
+  template <Friction kFriction>
+  void incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const;
   /// The force on i from j (dx = x_i - x_j, r2 = |dx|^2 < sigma_ij^2) into fij; the energy and
   /// friction power of the pair into sums. Exactly antisymmetric: from j's side (dx and the
   /// velocities negated) every operation gives the negated value, so a pair evaluated by two
@@ -86,6 +95,7 @@ class SpContact final : public ForceTerm<D> {
   FrictionLaw law_;
   bool scale_with_sigma_;
   bool friction_on_ = true;
+  bool simd_ = true;
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
   double max_overlap_ = 0;
@@ -140,6 +150,11 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
   double* F = f.data()->data();
   const std::uint8_t* species = s.species.data();
   const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
+#if defined(__SSE2__)
+  if constexpr (D == 2) {
+    if (!friction_group_ && simd_) return rows_sse2<kFriction>(s, f, b, lo, hi);
+  }
+#endif
   // the sums in locals (registers): accumulated into the returned struct they lived in memory,
   // a store and reload on every pair's dependency chain
   double energy = 0, power = 0, max_ov = 0;
@@ -167,39 +182,105 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
     }
     for (int d = 0; d < D; ++d) F[i * D + d] += fi[d];
   }
-  if (lo > 0) {
-    // pairs with items of earlier blocks, seen from this block's side (energy and power were
-    // counted by the earlier block: into a sink here)
-    double sink_energy = 0, sink_power = 0, sink_max = 0;
-    for (const int* q = list_.receivers_begin(b), *q_end = list_.receivers_end(b); q != q_end; ++q) {
-      const int j = *q;
-      double xj[D], fj[D];
-      for (int d = 0; d < D; ++d) {
-        xj[d] = X[j * D + d];
-        fj[d] = 0;
-      }
-      const int sj = species[j];
-      for (const int* p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
-        const int i = *p;
-        double dx[D], r2 = 0;
-        for (int d = 0; d < D; ++d) {
-          dx[d] = xj[d] - X[i * D + d];
-          r2 += dx[d] * dx[d];
-        }
-        const int si = species[i];
-        if (r2 >= sig2_[sj][si]) continue;
-        double fji[D];
-        pair_force<kFriction>(V + j * D, V + i * D, dx, r2, sj, si, rubs(j, i), fji, sink_energy, sink_power, sink_max);
-        for (int d = 0; d < D; ++d) fj[d] += fji[d];
-      }
-      for (int d = 0; d < D; ++d) F[j * D + d] += fj[d];
-    }
-  }
+  if (lo > 0) incoming<kFriction>(s, f, b);
   BlockSums sums;
   sums.energy = energy;
   sums.power = power;
   sums.max_overlap = max_ov;
   return sums;
 }
+
+template <int D>
+template <typename SpContact<D>::Friction kFriction>
+void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const {
+  const double* X = s.x.data()->data();
+  const double* V = s.v.data()->data();
+  double* F = f.data()->data();
+  const std::uint8_t* species = s.species.data();
+  // pairs with items of earlier blocks, seen from this block's side (energy and power were
+  // counted by the earlier block: into a sink here)
+  double sink_energy = 0, sink_power = 0, sink_max = 0;
+  for (const int* q = list_.receivers_begin(b), *q_end = list_.receivers_end(b); q != q_end; ++q) {
+    const int j = *q;
+    double xj[D], fj[D];
+    for (int d = 0; d < D; ++d) {
+      xj[d] = X[j * D + d];
+      fj[d] = 0;
+    }
+    const int sj = species[j];
+    for (const int* p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
+      const int i = *p;
+      double dx[D], r2 = 0;
+      for (int d = 0; d < D; ++d) {
+        dx[d] = xj[d] - X[i * D + d];
+        r2 += dx[d] * dx[d];
+      }
+      const int si = species[i];
+      if (r2 >= sig2_[sj][si]) continue;
+      double fji[D];
+      pair_force<kFriction>(V + j * D, V + i * D, dx, r2, sj, si, rubs(j, i), fji, sink_energy, sink_power, sink_max);
+      for (int d = 0; d < D; ++d) fj[d] += fji[d];
+    }
+    for (int d = 0; d < D; ++d) F[j * D + d] += fj[d];
+  }
+}
+
+#if defined(__SSE2__)
+template <int D>
+template <typename SpContact<D>::Friction kFriction>
+typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo,
+                                                         int hi) const {
+  constexpr auto kLane = kFriction == Friction::None   ? sse2::Friction::None
+                         : kFriction == Friction::Full ? sse2::Friction::Full
+                                                       : sse2::Friction::Split;
+  sse2::PairTables t;
+  for (int a = 0; a < 2; ++a)
+    for (int c = 0; c < 2; ++c) {
+      t.sig2[2 * a + c] = sig2_[a][c];
+      t.inv_sig[2 * a + c] = inv_sig_[a][c];
+      t.half_eps[2 * a + c] = 0.5 * eps_ab_[a][c];
+      t.k[2 * a + c] = k_[a][c];
+    }
+  const double* X = s.x.data()->data();
+  const double* V = s.v.data()->data();
+  double* F = f.data()->data();
+  const std::uint8_t* species = s.species.data();
+  sse2::LaneSums lanes;
+  double energy = 0, power = 0, max_ov = 0;  // the odd pair of a row, done as in loop()
+  for (int i = lo; i < hi; ++i) {
+    const int si = species[i];
+    const __m128d xi = _mm_loadu_pd(X + 2 * i), vi = _mm_loadu_pd(V + 2 * i);
+    __m128d fi = _mm_setzero_pd();
+    const int* p = list_.row_begin(i);
+    const int* end = list_.row_end(i);
+    for (; end - p >= 2; p += 2)
+      sse2::two_pairs<kLane>(X, V, F, species, si, xi, vi, p[0], p[1], hi, t, law_.mu_n, law_.mu_t, fi, lanes);
+    if (p != end) {  // the last, odd pair: the scalar code, after the others as in loop()
+      const int j = *p;
+      double dx[D], r2 = 0, xs[D];
+      _mm_storeu_pd(xs, xi);
+      for (int d = 0; d < D; ++d) {
+        dx[d] = xs[d] - X[j * D + d];
+        r2 += dx[d] * dx[d];
+      }
+      const int sj = species[j];
+      if (r2 < sig2_[si][sj]) {
+        double fij[D];
+        pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, true, fij, energy, power, max_ov);
+        fi = _mm_add_pd(fi, _mm_loadu_pd(fij));
+        if (j < hi) _mm_storeu_pd(F + 2 * j, _mm_sub_pd(_mm_loadu_pd(F + 2 * j), _mm_loadu_pd(fij)));
+      }
+    }
+    _mm_storeu_pd(F + 2 * i, _mm_add_pd(_mm_loadu_pd(F + 2 * i), fi));
+  }
+  if (lo > 0) incoming<kFriction>(s, f, b);
+  BlockSums sums;
+  sums.energy = energy + sse2::sum_lanes(lanes.energy);
+  sums.power = power + sse2::sum_lanes(lanes.power);
+  const double lane_max = sse2::max_lanes(lanes.max_ov);
+  sums.max_overlap = max_ov > lane_max ? max_ov : lane_max;
+  return sums;
+}
+#endif
 
 }  // namespace beverloo

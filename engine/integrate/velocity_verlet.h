@@ -23,23 +23,36 @@ struct StepReport {
 /// squared displacement from `reference` (a Verlet list's build positions; empty: 0), taken in
 /// the same pass so that the list's rebuild test costs no second sweep over the positions.
 /// threads: OpenMP threads for the loop (each item's update is its own: any count, same bits).
+/// Raw pointers and component loops: through the vectors' members GCC reloaded every array
+/// pointer on every item (the stores might alias them). The operations are Eigen's, in its order.
 template <int D>
 double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference, int threads = 1) {
   const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
   const int n = s.size();
-  double moved2 = 0;
+  double* __restrict X = s.x.data()->data();
+  double* __restrict V = s.v.data()->data();
+  const double* __restrict F = s.f.data()->data();
+  const double* __restrict inv_m = s.inv_mass.data();
   const bool measure = static_cast<int>(reference.size()) == n;
+  const double* __restrict R = measure ? reference.data()->data() : nullptr;
+  double moved2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : moved2) num_threads(threads) if (threads > 1)
   for (int i = 0; i < n; ++i) {
-    const Vec<D> a = s.f[i] * s.inv_mass[i];
-    s.x[i] += dt * s.v[i] + half_dt2 * a;
-    s.v[i] += half_dt * a;
+    double d2 = 0;
+    for (int d = 0; d < D; ++d) {
+      const double a = F[i * D + d] * inv_m[i];
+      X[i * D + d] += dt * V[i * D + d] + half_dt2 * a;
+      V[i * D + d] += half_dt * a;
+    }
     if (measure) {
-      const double d2 = (s.x[i] - reference[i]).squaredNorm();
+      for (int d = 0; d < D; ++d) {
+        const double u = X[i * D + d] - R[i * D + d];
+        d2 = d == 0 ? u * u : d2 + u * u;
+      }
       moved2 = d2 > moved2 ? d2 : moved2;
     }
   }
-  return measure ? moved2 : 0.0;
+  return moved2;
 }
 
 /// The second half: v += f dt / (2 m) with the new forces. Returns whether every position and
@@ -47,12 +60,19 @@ double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference, int t
 template <int D>
 bool kick(ParticleState<D>& s, double dt, int threads = 1) {
   const double half_dt = 0.5 * dt;
-  double checksum = 0;  // only its finiteness is used: any summation order will do
   const int n = s.size();
+  const double* __restrict X = s.x.data()->data();
+  double* __restrict V = s.v.data()->data();
+  const double* __restrict F = s.f.data()->data();
+  const double* __restrict inv_m = s.inv_mass.data();
+  double checksum = 0;  // only its finiteness is used: any summation order will do
 #pragma omp parallel for schedule(static) reduction(+ : checksum) num_threads(threads) if (threads > 1)
   for (int i = 0; i < n; ++i) {
-    s.v[i] += (half_dt * s.inv_mass[i]) * s.f[i];
-    checksum += s.x[i].sum() + s.v[i].sum();
+    const double c = half_dt * inv_m[i];
+    for (int d = 0; d < D; ++d) {
+      V[i * D + d] += c * F[i * D + d];
+      checksum += X[i * D + d] + V[i * D + d];
+    }
   }
   return std::isfinite(checksum);
 }

@@ -83,6 +83,42 @@ TEST(ForceBlocks, EqualBruteForceFullFriction2D) { check_blocks_against_brute_fo
 TEST(ForceBlocks, EqualBruteForceSplitFriction2D) { check_blocks_against_brute_force<2>(1500, 3.0, 0.0, 0.0); }
 TEST(ForceBlocks, EqualBruteForceFullFriction3D) { check_blocks_against_brute_force<3>(2500, 3.0, -1, 0.2); }
 
+/// The 2D rows two pairs at a time (sp_pairs_sse2.h) give the scalar loop's forces bit for bit,
+/// for each friction law (blocks and all).
+void check_simd_equals_scalar(double mu, double mu_n, double zeta) {
+  SimConfig c = small_config(2, 1500, 3.0, zeta, mu);
+  c.W = 40;
+  c.gravity = 1;
+  if (mu_n >= 0) c.mu_n = mu_n;
+  c.resolve_and_validate();
+  const Hopper<2> h = hopper_for<2>(c);
+  ParticleState<2> s = random_state<2>(c, h, 5);
+  random_velocities<2>(s, 9);
+  ForceField<2> ff(c, h);
+  ParticleState<2> scratch;
+  ff.list().build_sorting(s, h, scratch);
+  ASSERT_GE(ff.list().blocks(), 2);
+  ff.evaluate(s);
+  const VecArray<2> simd = s.f;
+  SpContact<2>& contact = const_cast<SpContact<2>&>(ff.contact());
+  contact.set_simd(false);
+  const ForceReport scalar_report = ff.evaluate(s);
+  int touching = 0;
+  for (int i = 0; i < s.size(); ++i) {
+    ASSERT_EQ(simd[i][0], s.f[i][0]) << "particle " << i;
+    ASSERT_EQ(simd[i][1], s.f[i][1]) << "particle " << i;
+  }
+  for (int i = 0; i < s.size(); ++i)
+    for (const int* p = ff.list().row_begin(i); p != ff.list().row_end(i); ++p)
+      touching += (s.x[i] - s.x[*p]).norm() < 0.5 * (s.sigma(i) + s.sigma(*p));
+  EXPECT_GT(touching, 500) << "too few contacts for the comparison to mean anything";
+  EXPECT_GT(scalar_report.U_contact, 0);
+}
+
+TEST(ForceBlocks, TwoPairsAtATimeEqualTheScalarLoopNoFriction) { check_simd_equals_scalar(0, -1, 0.3); }
+TEST(ForceBlocks, TwoPairsAtATimeEqualTheScalarLoopFullFriction) { check_simd_equals_scalar(3.0, -1, 0); }
+TEST(ForceBlocks, TwoPairsAtATimeEqualTheScalarLoopSplitFriction) { check_simd_equals_scalar(3.0, 0.0, 0); }
+
 /// A flowing hopper large enough for blocks, advanced `steps` steps with `threads` threads.
 template <int D>
 ParticleState<D> flow(int threads, std::int64_t steps, const std::string& dir = "", std::int64_t checkpoint_at = -1) {

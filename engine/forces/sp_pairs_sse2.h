@@ -1,0 +1,97 @@
+#pragma once
+/// \file sp_pairs_sse2.h
+/// \brief One row of the 2D SP pair loop, two pairs at a time in SSE2 (every x86-64 has it, so
+/// no host tuning and the same bits on every node).
+///
+/// Why: a row's cost is the square root and the division of each touching pair; sqrtpd and
+/// divpd do two pairs for about the price of one. Each lane does exactly the scalar pair's
+/// operations in the scalar order (SpContact::pair_force), so the forces are the same bits as
+/// the scalar loop's (tests/physics/test_force_blocks.cpp compares them); a pair that does not
+/// touch gets overlap 0 and adds +-0. Only the energy and friction-power sums (diagnostics) add
+/// in another order.
+#if defined(__SSE2__)
+#include <emmintrin.h>
+
+#include <cstdint>
+
+namespace beverloo::sse2 {
+
+/// Per species pair (index 2 si + sj): contact distance^2, its inverse, eps/2, eps/sigma.
+struct PairTables {
+  double sig2[4], inv_sig[4], half_eps[4], k[4];
+};
+
+/// Running sums of a block: two lanes each, added up at the end.
+struct LaneSums {
+  __m128d energy = _mm_setzero_pd(), power = _mm_setzero_pd(), max_ov = _mm_setzero_pd();
+};
+
+enum class Friction { None, Full, Split };
+
+/// Pairs p[0], p[1] (j > i) of row i: forces on i into fi, minus on j if j < hi (j's block is
+/// this one; else j's block adds it from its incoming list).
+template <Friction kFriction>
+[[gnu::always_inline]] inline void two_pairs(const double* X, const double* V, double* F, const std::uint8_t* species,
+                                             int si, __m128d xi, __m128d vi, int ja, int jb, int hi,
+                                             const PairTables& t, double mu_n, double mu_t, __m128d& fi,
+                                             LaneSums& sums) {
+  const __m128d dxa = _mm_sub_pd(xi, _mm_loadu_pd(X + 2 * ja));
+  const __m128d dxb = _mm_sub_pd(xi, _mm_loadu_pd(X + 2 * jb));
+  const __m128d sqa = _mm_mul_pd(dxa, dxa), sqb = _mm_mul_pd(dxb, dxb);
+  // r2 = dx0^2 + dx1^2 for each pair: lane 0 pair a, lane 1 pair b
+  const __m128d r2 = _mm_add_pd(_mm_unpacklo_pd(sqa, sqb), _mm_unpackhi_pd(sqa, sqb));
+  const int ta = 2 * si + species[ja], tb = 2 * si + species[jb];
+  const __m128d touching = _mm_cmplt_pd(r2, _mm_set_pd(t.sig2[tb], t.sig2[ta]));
+  if (_mm_movemask_pd(touching) == 0) return;
+  const __m128d r = _mm_sqrt_pd(r2);
+  const __m128d one = _mm_set1_pd(1.0);
+  const __m128d ov = _mm_and_pd(touching, _mm_sub_pd(one, _mm_mul_pd(r, _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta]))));
+  // 0.5 * eps * ov * ov, as the scalar (0.5 * eps) * ov * ov
+  sums.energy = _mm_add_pd(sums.energy, _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.half_eps[tb], t.half_eps[ta]), ov), ov));
+  sums.max_ov = _mm_max_pd(sums.max_ov, ov);
+  const __m128d scale = _mm_div_pd(_mm_mul_pd(_mm_set_pd(t.k[tb], t.k[ta]), ov), r);
+  __m128d fa = _mm_mul_pd(_mm_unpacklo_pd(scale, scale), dxa);
+  __m128d fb = _mm_mul_pd(_mm_unpackhi_pd(scale, scale), dxb);
+  if constexpr (kFriction != Friction::None) {
+    const __m128d on_a = _mm_unpacklo_pd(touching, touching), on_b = _mm_unpackhi_pd(touching, touching);
+    const __m128d dva = _mm_sub_pd(vi, _mm_loadu_pd(V + 2 * ja));
+    const __m128d dvb = _mm_sub_pd(vi, _mm_loadu_pd(V + 2 * jb));
+    __m128d ffa, ffb;
+    if constexpr (kFriction == Friction::Split) {
+      const __m128d inv_r = _mm_div_pd(one, r);
+      const __m128d na = _mm_mul_pd(dxa, _mm_unpacklo_pd(inv_r, inv_r));
+      const __m128d nb = _mm_mul_pd(dxb, _mm_unpackhi_pd(inv_r, inv_r));
+      const __m128d pa = _mm_mul_pd(dva, na), pb = _mm_mul_pd(dvb, nb);
+      // dv . n = dv0 n0 + dv1 n1 per pair
+      const __m128d dot = _mm_add_pd(_mm_unpacklo_pd(pa, pb), _mm_unpackhi_pd(pa, pb));
+      const __m128d dvna = _mm_mul_pd(_mm_unpacklo_pd(dot, dot), na);
+      const __m128d dvnb = _mm_mul_pd(_mm_unpackhi_pd(dot, dot), nb);
+      const __m128d m_n = _mm_set1_pd(-mu_n), m_t = _mm_set1_pd(mu_t);
+      ffa = _mm_sub_pd(_mm_mul_pd(m_n, dvna), _mm_mul_pd(m_t, _mm_sub_pd(dva, dvna)));
+      ffb = _mm_sub_pd(_mm_mul_pd(m_n, dvnb), _mm_mul_pd(m_t, _mm_sub_pd(dvb, dvnb)));
+    } else {
+      const __m128d m_t = _mm_set1_pd(-mu_t);
+      ffa = _mm_mul_pd(m_t, dva);
+      ffb = _mm_mul_pd(m_t, dvb);
+    }
+    ffa = _mm_and_pd(on_a, ffa);
+    ffb = _mm_and_pd(on_b, ffb);
+    const __m128d wa = _mm_mul_pd(ffa, dva), wb = _mm_mul_pd(ffb, dvb);
+    sums.power = _mm_add_pd(sums.power, _mm_add_pd(_mm_unpacklo_pd(wa, wb), _mm_unpackhi_pd(wa, wb)));
+    fa = _mm_add_pd(fa, ffa);
+    fb = _mm_add_pd(fb, ffb);
+  }
+  fi = _mm_add_pd(fi, fa);
+  if (ja < hi) _mm_storeu_pd(F + 2 * ja, _mm_sub_pd(_mm_loadu_pd(F + 2 * ja), fa));
+  fi = _mm_add_pd(fi, fb);
+  if (jb < hi) _mm_storeu_pd(F + 2 * jb, _mm_sub_pd(_mm_loadu_pd(F + 2 * jb), fb));
+}
+
+inline double sum_lanes(__m128d v) { return _mm_cvtsd_f64(v) + _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
+inline double max_lanes(__m128d v) {
+  const double a = _mm_cvtsd_f64(v), b = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
+  return a > b ? a : b;
+}
+
+}  // namespace beverloo::sse2
+#endif

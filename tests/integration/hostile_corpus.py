@@ -158,6 +158,19 @@ def prep(kind, work, case, camp):
     elif kind == "db_fifo":
         db = remove_database(camp)
         os.mkfifo(db)
+    elif kind.startswith("checkpoint_"):
+        # a job stopped part-way whose checkpoint is damaged: no outcome, no result, and a
+        # checkpoint.h5 that is garbage or another file; the next run sets it aside and reruns
+        d = reopen_attempt(camp, 4)
+        result = os.path.join(d, "result.h5")
+        if kind == "checkpoint_is_a_result":
+            shutil.copy(result, os.path.join(d, "checkpoint.h5"))
+        for name in ("outcome.json", "summary.json", "result.h5"):
+            if os.path.exists(os.path.join(d, name)):
+                os.remove(os.path.join(d, name))
+        if kind == "checkpoint_garbage":
+            with open(os.path.join(d, "checkpoint.h5"), "wb") as f:
+                f.write(b"\x89HDF\r\n\x1a\n" + os.urandom(4000))
     elif kind.startswith("outcome_") or kind == "job_dir_file":
         d = reopen_attempt(camp, 4)
         if kind == "outcome_summary_missing":

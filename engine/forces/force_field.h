@@ -30,7 +30,9 @@ class ForceField {
         walls_(hopper, list_, c.E_w),
         gravity_(c.gravity),
         drag_(drag_coefficients(c.zeta, c.drag_rate, Species::bidisperse(D, c.size_ratio).mass)),
-        hopper_(hopper) {}
+        hopper_(hopper) {
+    list_.use_blocks(true);
+  }
 
   /// Zeroes s.f, brings the list up to date and adds every term. O(N).
   ForceReport compute(ParticleState<D>& s) {

@@ -14,7 +14,6 @@ void SpContact<D>::prepare(const ParticleState<D>& s) {
       sig2_[a][b] = sig * sig;
       inv_sig_[a][b] = 1.0 / sig;
       eps_ab_[a][b] = scale_with_sigma_ ? eps_ * sig : eps_;
-      k_[a][b] = eps_ab_[a][b] * inv_sig_[a][b];
     }
   list_.update_incoming();
 }

@@ -99,9 +99,8 @@ class SpContact final : public ForceTerm<D> {
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
   double max_overlap_ = 0;
-  // species-pair tables (prepare()): contact distance^2, its inverse, the energy scale, and
-  // the energy scale over the contact distance
-  double sig2_[2][2], inv_sig_[2][2], eps_ab_[2][2], k_[2][2];
+  // species-pair tables (prepare()): contact distance^2, its inverse, the energy scale
+  double sig2_[2][2], inv_sig_[2][2], eps_ab_[2][2];
 };
 
 template <int D>
@@ -114,7 +113,8 @@ template <typename SpContact<D>::Friction kFriction>
   const double ov = 1.0 - r * inv_sig_[si][sj];
   energy += 0.5 * eps_ab_[si][sj] * ov * ov;
   max_overlap = ov > max_overlap ? ov : max_overlap;
-  const double scale = k_[si][sj] * ov / r;
+  // (eps ov / sigma) / r in HarmonicOverlap's order: the DP rough contact's sums stay bit for bit
+  const double scale = eps_ab_[si][sj] * ov * inv_sig_[si][sj] / r;
   for (int d = 0; d < D; ++d) fij[d] = scale * dx[d];  // on i, along x_i - x_j (repulsive)
   if constexpr (kFriction != Friction::None) {
     if (rub) {
@@ -239,7 +239,7 @@ typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>&
       t.sig2[2 * a + c] = sig2_[a][c];
       t.inv_sig[2 * a + c] = inv_sig_[a][c];
       t.half_eps[2 * a + c] = 0.5 * eps_ab_[a][c];
-      t.k[2 * a + c] = k_[a][c];
+      t.eps[2 * a + c] = eps_ab_[a][c];
     }
   const double* X = s.x.data()->data();
   const double* V = s.v.data()->data();

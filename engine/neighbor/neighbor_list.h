@@ -58,7 +58,13 @@ class NeighborList {
     const double layers = std::pow(static_cast<double>(n), 1.0 / D);
     return std::clamp(static_cast<int>(layers / kLayersPerBlock), 2, kMaxBlocks);
   }
-  int blocks() const { return block_count(static_cast<int>(row_end_.size())); }
+  int blocks() const { return blocks_on_ ? block_count(static_cast<int>(row_end_.size())) : 1; }
+  /// Blocks are for the SP force field (ForceField turns them on); a DP list keeps one block,
+  /// so that its models' sums stay in the order they always had.
+  void use_blocks(bool on) {
+    blocks_on_ = on;
+    incoming_stale_ = true;
+  }
   int block_begin(int b) const {
     const long n = static_cast<long>(row_end_.size());
     return static_cast<int>(n * b / blocks());
@@ -156,6 +162,7 @@ class NeighborList {
   static constexpr int kMaxBlocks = 64;
   std::vector<int> in_start_, in_items_, receivers_, receivers_start_;
   bool incoming_stale_ = true;
+  bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing
   std::vector<int> cell_of_, cell_start_, cell_items_, cursor_, order_;

@@ -32,7 +32,7 @@ struct ParticleState {
   /// SP model sorts its particles by cell; a draining hopper swaps the last into a taken-out
   /// slot): what exit records and trajectories name, where the index is only a storage slot.
   std::vector<std::int32_t> id;
-  std::int64_t step = 0;             ///< steps since gravity was switched on
+  std::int64_t step = 0;  ///< steps since gravity was switched on
   Species sp;
 
   int size() const { return static_cast<int>(x.size()); }

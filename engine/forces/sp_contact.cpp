@@ -23,7 +23,7 @@ void SpContact<D>::friction_forces(const ParticleState<D>& s, VecArray<D>& out) 
   const int n = s.size();
   out.assign(n, Vec<D>::Zero());
   for (int i = 0; i < n; ++i) {
-    for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
+    for (const int *p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
       const int j = *p;
       const double sig = 0.5 * (s.sigma(i) + s.sigma(j));
       const Vec<D> dx = s.x[i] - s.x[j];

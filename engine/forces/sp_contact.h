@@ -2,7 +2,8 @@
 /// \file sp_contact.h
 /// \brief Soft-particle contacts: harmonic repulsion U = (E_sp/2)(1 - r/sigma_mn)^2 and kinetic
 /// friction on overlapping pairs (full or split along the centre line, kinetic_friction.h),
-/// evaluated in one pass over the Verlet list.
+/// evaluated in one pass over the Verlet list, block by block (neighbor_list.h: blocks; each
+/// block adds only to its own items' forces, so blocks can run on threads).
 ///
 /// Why one pass: friction acts exactly on the pairs that overlap, so both parts share the
 /// distance test; a second loop over the list would double the memory traffic of the hottest
@@ -81,8 +82,9 @@ class SpContact final : public ForceTerm<D> {
   /// velocities negated) every operation gives the negated value, so a pair evaluated by two
   /// blocks adds opposite forces.
   template <Friction kFriction>
-  [[gnu::always_inline]] inline void pair_force(const double* vi, const double* vj, const double* dx, double r2, int si, int sj, bool rub,
-                  double* fij, double& energy, double& power, double& max_overlap) const;
+  [[gnu::always_inline]] inline void pair_force(const double* vi, const double* vj, const double* dx, double r2, int si,
+                                                int sj, bool rub, double* fij, double& energy, double& power,
+                                                double& max_overlap) const;
   /// The friction force on i from j (dx = x_i - x_j, r = |dx|); kSplit: the split law.
   template <bool kSplit>
   Vec<D> friction_on(const ParticleState<D>& s, int i, int j, const Vec<D>& dx, double r) const {
@@ -105,9 +107,9 @@ class SpContact final : public ForceTerm<D> {
 
 template <int D>
 template <typename SpContact<D>::Friction kFriction>
-[[gnu::always_inline]] inline void SpContact<D>::pair_force(const double* vi, const double* vj, const double* dx, double r2, int si, int sj,
-                              bool rub, double* fij, double& energy, double& power,
-                                                                   double& max_overlap) const {
+[[gnu::always_inline]] inline void SpContact<D>::pair_force(const double* vi, const double* vj, const double* dx,
+                                                            double r2, int si, int sj, bool rub, double* fij,
+                                                            double& energy, double& power, double& max_overlap) const {
   const double r = std::sqrt(r2);
   // HarmonicOverlap, written out: U = (eps/2) ov^2, ov = 1 - r/sigma, |F| = eps ov / sigma
   const double ov = 1.0 - r * inv_sig_[si][sj];
@@ -165,7 +167,7 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
       fi[d] = 0;
     }
     const int si = species[i];
-    for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
+    for (const int *p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
       const int j = *p;
       double dx[D], r2 = 0;
       for (int d = 0; d < D; ++d) {
@@ -200,7 +202,7 @@ void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) co
   // pairs with items of earlier blocks, seen from this block's side (energy and power were
   // counted by the earlier block: into a sink here)
   double sink_energy = 0, sink_power = 0, sink_max = 0;
-  for (const int* q = list_.receivers_begin(b), *q_end = list_.receivers_end(b); q != q_end; ++q) {
+  for (const int *q = list_.receivers_begin(b), *q_end = list_.receivers_end(b); q != q_end; ++q) {
     const int j = *q;
     double xj[D], fj[D];
     for (int d = 0; d < D; ++d) {
@@ -208,7 +210,7 @@ void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) co
       fj[d] = 0;
     }
     const int sj = species[j];
-    for (const int* p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
+    for (const int *p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
       const int i = *p;
       double dx[D], r2 = 0;
       for (int d = 0; d < D; ++d) {

@@ -49,8 +49,8 @@ template <Friction kFriction>
   // 0.5 * eps * ov * ov, as the scalar (0.5 * eps) * ov * ov
   sums.energy = _mm_add_pd(sums.energy, _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.half_eps[tb], t.half_eps[ta]), ov), ov));
   sums.max_ov = _mm_max_pd(sums.max_ov, ov);
-  const __m128d scale =
-      _mm_div_pd(_mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.eps[tb], t.eps[ta]), ov), _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta])), r);
+  const __m128d scale = _mm_div_pd(
+      _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.eps[tb], t.eps[ta]), ov), _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta])), r);
   __m128d fa = _mm_mul_pd(_mm_unpacklo_pd(scale, scale), dxa);
   __m128d fb = _mm_mul_pd(_mm_unpackhi_pd(scale, scale), dxb);
   if constexpr (kFriction != Friction::None) {

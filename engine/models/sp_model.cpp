@@ -4,10 +4,10 @@
 #include <limits>
 #include <string>
 
-#include "core/errors.h"
 #include "../forces/harmonic_overlap.h"
 #include "../io/vec_io.h"
 #include "../protocol/placement.h"
+#include "core/errors.h"
 
 namespace beverloo {
 
@@ -107,7 +107,8 @@ void SpModel<D>::load_checkpoint(hid_t file, ParticleState<D>& bodies) {
     auto ints = [&](const char* name) {
       const std::vector<std::int64_t> v = h5::read_int64(g, name);
       for (std::int64_t k : v)
-        if (k < -1 || k > std::numeric_limits<int>::max()) throw IoError(std::string("checkpoint: sp_list/") + name + " out of range");
+        if (k < -1 || k > std::numeric_limits<int>::max())
+          throw IoError(std::string("checkpoint: sp_list/") + name + " out of range");
       return std::vector<int>(v.begin(), v.end());
     };
     snap.row_start = ints("row_start");
@@ -127,8 +128,8 @@ template <int D>
 void SpModel<D>::check_step(const StepReport& r, double t, double max_overlap) const {
   if (!r.finite) throw InstabilityError("NaN or infinite position/velocity at t = " + std::to_string(t));
   if (r.forces.max_overlap > max_overlap)
-    throw InstabilityError("pair overlap 1 - r/sigma = " + std::to_string(r.forces.max_overlap) + " beyond max_overlap = " +
-                           std::to_string(max_overlap) + " at t = " + std::to_string(t));
+    throw InstabilityError("pair overlap 1 - r/sigma = " + std::to_string(r.forces.max_overlap) +
+                           " beyond max_overlap = " + std::to_string(max_overlap) + " at t = " + std::to_string(t));
 }
 
 template class SpModel<2>;

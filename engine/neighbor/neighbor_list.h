@@ -7,9 +7,9 @@
 /// which pair forces are summed depend only on which pairs overlap, not on when the list was
 /// built, so a run resumed from a checkpoint (which rebuilds the list) stays bit-identical.
 /// The same build records, per particle, which walls are within sigma_i/2 + skin.
-#include <cstdint>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "../geometry/hopper.h"

@@ -67,8 +67,8 @@ void check_blocks_against_brute_force(int n, double mu, double mu_n, double zeta
   double largest = 0;
   for (const auto& fi : want) largest = std::max(largest, fi.norm());
   for (int i = 0; i < s.size(); ++i)
-    ASSERT_LT((s.f[i] - want[i]).norm(), 1e-12 * largest) << "particle " << i << " (block boundary at "
-                                                           << ff.list().block_begin(1) << ")";
+    ASSERT_LT((s.f[i] - want[i]).norm(), 1e-12 * largest)
+        << "particle " << i << " (block boundary at " << ff.list().block_begin(1) << ")";
   // the energy too: each pair once, whichever block counted it
   double U = 0;
   for (int i = 0; i < s.size(); ++i)
@@ -172,8 +172,8 @@ TEST(ForceBlocks, ResumedRunContinuesBitForBitWithAnotherThreadCount) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const ParticleState<2> straight = flow<2>(1, 4000);
-  flow<2>(2, 0, dir, 2500);                                 // checkpoint part-way, two threads
-  expect_same_bits(straight, flow<2>(1, 4000, dir));        // resumed with one
+  flow<2>(2, 0, dir, 2500);                           // checkpoint part-way, two threads
+  expect_same_bits(straight, flow<2>(1, 4000, dir));  // resumed with one
   std::filesystem::remove_all(dir);
 }
 

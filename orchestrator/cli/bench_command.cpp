@@ -119,10 +119,10 @@ CaseResult run_case(const BenchCase& bc, int runs, int threads) {
   const double median = rates[rates.size() / 2];
   CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
                  rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points(),
-                 threads};
+                 bc.config.is_dp() ? 1 : threads};  // the DP models do not use threads (yet)
   std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s  (%d runs x %lld steps, dt %.3g, %d thread%s)\n",
               out.id.c_str(), out.description.c_str(), out.skin, out.builds_per_kstep, out.median, out.min, out.max,
-              out.unit.c_str(), out.runs, static_cast<long long>(out.steps), out.dt, threads, threads == 1 ? "" : "s");
+              out.unit.c_str(), out.runs, static_cast<long long>(out.steps), out.dt, out.threads, out.threads == 1 ? "" : "s");
   std::fflush(human);
   return out;
 }

@@ -77,8 +77,7 @@ class ForceField {
         U_gravity += m * g * X[i * D + kUp<D>];
         P_drag -= c * v2;
       }
-      for (int i = lo; i < hi; ++i)
-        if (list_.wall_mask(i)) U_wall += walls_.add_to(s, i, s.f[i]);
+      for (int i = lo; i < hi; ++i) U_wall += walls_.add_to(s, i, s.f[i]);  // 0 unless a wall is near
       BlockPartial& out = partial_[b];
       out.contact = contact_.block(s, s.f, b);
       out.U_gravity = U_gravity;

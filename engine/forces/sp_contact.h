@@ -85,6 +85,23 @@ class SpContact final : public ForceTerm<D> {
   [[gnu::always_inline]] inline void pair_force(const double* vi, const double* vj, const double* dx, double r2, int si,
                                                 int sj, bool rub, double* fij, double& energy, double& power,
                                                 double& max_overlap) const;
+  /// Listed pair (i, j) seen from i (xi: i's position, si its species): if the two touch, the
+  /// force on i into fij, energy and power into the sums, and true. The one scalar pair of the
+  /// rows, the incoming lists and the SSE2 rows' odd pair.
+  template <Friction kFriction>
+  [[gnu::always_inline]] inline bool touching_pair(const double* X, const double* V, const std::uint8_t* species, int i,
+                                                   const double* xi, int si, int j, double* fij, double& energy,
+                                                   double& power, double& max_overlap) const {
+    double dx[D], r2 = 0;
+    for (int d = 0; d < D; ++d) {
+      dx[d] = xi[d] - X[j * D + d];
+      r2 += dx[d] * dx[d];
+    }
+    const int sj = species[j];
+    if (r2 >= sig2_[si][sj]) return false;
+    pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, rubs(i, j), fij, energy, power, max_overlap);
+    return true;
+  }
   /// The friction force on i from j (dx = x_i - x_j, r = |dx|); kSplit: the split law.
   template <bool kSplit>
   Vec<D> friction_on(const ParticleState<D>& s, int i, int j, const Vec<D>& dx, double r) const {
@@ -169,15 +186,8 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
     const int si = species[i];
     for (const int *p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
       const int j = *p;
-      double dx[D], r2 = 0;
-      for (int d = 0; d < D; ++d) {
-        dx[d] = xi[d] - X[j * D + d];
-        r2 += dx[d] * dx[d];
-      }
-      const int sj = species[j];
-      if (r2 >= sig2_[si][sj]) continue;
       double fij[D];
-      pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, rubs(i, j), fij, energy, power, max_ov);
+      if (!touching_pair<kFriction>(X, V, species, i, xi, si, j, fij, energy, power, max_ov)) continue;
       for (int d = 0; d < D; ++d) fi[d] += fij[d];
       if (j < hi)  // j is this block's: its share now; else j's block adds it (incoming)
         for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
@@ -211,16 +221,8 @@ void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) co
     }
     const int sj = species[j];
     for (const int *p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
-      const int i = *p;
-      double dx[D], r2 = 0;
-      for (int d = 0; d < D; ++d) {
-        dx[d] = xj[d] - X[i * D + d];
-        r2 += dx[d] * dx[d];
-      }
-      const int si = species[i];
-      if (r2 >= sig2_[sj][si]) continue;
       double fji[D];
-      pair_force<kFriction>(V + j * D, V + i * D, dx, r2, sj, si, rubs(j, i), fji, sink_energy, sink_power, sink_max);
+      if (!touching_pair<kFriction>(X, V, species, j, xj, sj, *p, fji, sink_energy, sink_power, sink_max)) continue;
       for (int d = 0; d < D; ++d) fj[d] += fji[d];
     }
     for (int d = 0; d < D; ++d) F[j * D + d] += fj[d];
@@ -259,16 +261,9 @@ typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>&
       sse2::two_pairs<kLane>(X, V, F, species, si, xi, vi, p[0], p[1], hi, t, law_.mu_n, law_.mu_t, fi, lanes);
     if (p != end) {  // the last, odd pair: the scalar code, after the others as in loop()
       const int j = *p;
-      double dx[D], r2 = 0, xs[D];
+      double xs[D], fij[D];
       _mm_storeu_pd(xs, xi);
-      for (int d = 0; d < D; ++d) {
-        dx[d] = xs[d] - X[j * D + d];
-        r2 += dx[d] * dx[d];
-      }
-      const int sj = species[j];
-      if (r2 < sig2_[si][sj]) {
-        double fij[D];
-        pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, true, fij, energy, power, max_ov);
+      if (touching_pair<kFriction>(X, V, species, i, xs, si, j, fij, energy, power, max_ov)) {
         fi = _mm_add_pd(fi, _mm_loadu_pd(fij));
         if (j < hi) _mm_storeu_pd(F + 2 * j, _mm_sub_pd(_mm_loadu_pd(F + 2 * j), _mm_loadu_pd(fij)));
       }

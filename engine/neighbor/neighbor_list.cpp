@@ -119,13 +119,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
   const int n = s.size();
   start_build(s);
   bin(s);
-  // Per species-pair squared list cutoff (sigma_ij + skin)^2.
-  double cut2[2][2];
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      const double c = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]) + skin_;
-      cut2[a][b] = c * c;
-    }
+  const Cutoffs cut2 = cutoffs(s.sp);
   cell_items_.resize(n);
   // fill in index order so that each cell lists its particles in increasing index
   cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
@@ -157,7 +151,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
             if (extra_) {
               const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + extra_i + (*extra_)[j] + skin_;
               if ((xi - s.x[j]).squaredNorm() < c * c) nbr_.push_back(j);
-            } else if ((xi - s.x[j]).squaredNorm() < cut2[si][s.species[j]]) {
+            } else if ((xi - s.x[j]).squaredNorm() < cut2.c[si][s.species[j]]) {
               nbr_.push_back(j);
             }
           }
@@ -183,12 +177,7 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
   s.permute(order_, scratch);
   start_build(s);
 
-  double cut2[2][2];
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) {
-      const double c = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]) + skin_;
-      cut2[a][b] = c * c;
-    }
+  const Cutoffs cut2 = cutoffs(s.sp);
   // Cell cc now holds the items cell_start_[cc] .. cell_start_[cc + 1] - 1, and every item of a
   // later cell has a higher index: the j > i of row i are the later items of i's own cell and
   // the items of the neighbour cells after it, visited in increasing cell (so index) order.
@@ -199,7 +188,7 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
     while (cell_start_[cell + 1] <= i) ++cell;
     row_start_[i] = static_cast<int>(nbr_.size());
     const Vec<D> xi = s.x[i];
-    const double* cut_i = cut2[s.species[i]];
+    const double* cut_i = cut2.c[s.species[i]];
     auto scan = [&](int from, int to) {
       for (int j = from; j < to; ++j)
         if ((xi - s.x[j]).squaredNorm() < cut_i[s.species[j]]) nbr_.push_back(j);

@@ -131,6 +131,19 @@ class NeighborList {
   bool moved_beyond_half_skin(const ParticleState<D>& s) const;
   /// The cell grid over s's bounding box: dims_, cell_of_, cell_start_ (prefix sums).
   void bin(const ParticleState<D>& s);
+  /// Per species pair, the squared list cutoff (sigma_ab + skin)^2.
+  struct Cutoffs {
+    double c[2][2];
+  };
+  Cutoffs cutoffs(const Species& sp) const {
+    Cutoffs out;
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        const double c = 0.5 * (sp.sigma[a] + sp.sigma[b]) + skin_;
+        out.c[a][b] = c * c;
+      }
+    return out;
+  }
   void start_build(const ParticleState<D>& s);
   /// Closes row i (its slack, its wall mask).
   void end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper);

@@ -51,11 +51,8 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       obs_(c),
       estimator_(c.run),
       pile_finder_(c.N) {
-  model_ = make_model<D>(c_, hopper_);
-  model_->set_threads(opt_.threads);
+  make_fresh_model();
   body_drag_ = drag_coefficients(c_.zeta, c_.drag_rate, Species::bidisperse(D, c_.size_ratio).mass);
-  exits_.set_lateral_slack(model_->lateral_slack());
-  if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
   rec_.exit_time.reserve(1 << 16);
   rec_.exit_particle.reserve(1 << 16);
   rec_.exit_size.reserve(1 << 16);
@@ -66,13 +63,18 @@ template <int D>
 HopperRun<D>::~HopperRun() = default;
 
 template <int D>
-void HopperRun<D>::start_over() {
-  // everything a checkpoint load writes, as the constructor left it
-  s_ = ParticleState<D>{};
+void HopperRun<D>::make_fresh_model() {
   model_ = make_model<D>(c_, hopper_);
   model_->set_threads(opt_.threads);
   exits_.set_lateral_slack(model_->lateral_slack());
   if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
+}
+
+template <int D>
+void HopperRun<D>::start_over() {
+  // everything a checkpoint load writes, as the constructor left it
+  s_ = ParticleState<D>{};
+  make_fresh_model();
   rng_ = Rng(c_.effective_seed());
   rec_ = FlowRecord{};
   obs_ = FlowObservables<D>(c_);

@@ -94,6 +94,8 @@ class HopperRun : private StepHook<D> {
   /// over the DP bodies), between drift and force evaluation.
   void reinject_exited(NeighborList<D>& list);
   void place_and_minimize();
+  /// The model of the job, and what the protocol takes from it (lateral slack, spot test).
+  void make_fresh_model();
   /// Back to the state of a fresh run (an unusable checkpoint was partly read).
   void start_over();
   void check_containment() const;

@@ -2,10 +2,13 @@
 /// \file force_field.h
 /// \brief All force terms of one simulation, evaluated together. Owns the Verlet list so that
 /// every evaluation starts from a valid list.
+#include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
 #include "../config.h"
+#include "../integrate/exit_watch.h"
 #include "drag.h"
 #include "gravity.h"
 #include "hopper_walls.h"
@@ -50,7 +53,7 @@ class ForceField {
     const int nb = list_.blocks();
     partial_.resize(nb);
     const double g = gravity_.g();
-    const std::array<double, 2> drag = drag_.active() ? drag_.coefficients() : std::array<double, 2>{0, 0};
+    const std::array<double, 2> drag = drag_coefficients_now();
     // plain doubles: a component write into an Eigen vector made GCC spill it to the stack and
     // reload it whole, a store-forwarding stall per particle that cost more than the loop
     const double* __restrict X = s.x.data()->data();
@@ -98,6 +101,97 @@ class ForceField {
     r.max_overlap = contact_.max_overlap();
     return r;
   }
+  /// What a step needs of its forces (forces_and_kick()): the energies are diagnostics that
+  /// compute() and evaluate() give.
+  struct StepForces {
+    double max_overlap = 0;  ///< largest relative pair overlap 1 - r/sigma_mn
+    bool finite = true;      ///< every position and velocity finite after the kick
+  };
+
+  /// The first of a step's two sweeps over the items (SpModel::step): the drift of
+  /// velocity_verlet.h (x += v dt + a dt^2/2, v += a dt/2, a = f/m), the largest squared
+  /// displacement from `reference` (returned; 0 if it is not one position per item), whether
+  /// an item is where the exit bookkeeping has work (exits_possible, see ExitWatch), and the
+  /// start of the new force: f = gravity + drag at (x(t+dt), v~), as evaluate() starts it.
+  /// One pass instead of three (drift, exit test, force start); the same operations on each
+  /// item, so the same bits. Between this and forces_and_kick(), an item given a new position
+  /// and velocity needs start_force_of().
+  double drift_and_start_forces(ParticleState<D>& s, double dt, const VecArray<D>& reference, const ExitWatch& watch,
+                                bool& exits_possible) {
+    const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
+    const int n = s.size();
+    double* __restrict X = s.x.data()->data();
+    double* __restrict V = s.v.data()->data();
+    double* __restrict F = s.f.data()->data();
+    const double* __restrict inv_m = s.inv_mass.data();
+    const std::uint8_t* __restrict species = s.species.data();
+    const std::uint8_t* __restrict exited = s.exited.data();
+    const bool measure = static_cast<int>(reference.size()) == n;
+    const double* __restrict R = measure ? reference.data()->data() : nullptr;
+    const double g = gravity_.g();
+    const std::array<double, 2> drag = drag_coefficients_now(), mass = s.sp.mass;
+    double moved2 = 0;
+    int exiting = 0;
+#pragma omp parallel for schedule(static) reduction(max : moved2) reduction(| : exiting) num_threads(threads_) if (threads_ > 1)
+    for (int i = 0; i < n; ++i) {
+      for (int d = 0; d < D; ++d) {
+        const double a = F[i * D + d] * inv_m[i];
+        X[i * D + d] += dt * V[i * D + d] + half_dt2 * a;
+        V[i * D + d] += half_dt * a;
+      }
+      if (measure) {
+        double d2 = 0;
+        for (int d = 0; d < D; ++d) {
+          const double u = X[i * D + d] - R[i * D + d];
+          d2 = d == 0 ? u * u : d2 + u * u;
+        }
+        moved2 = d2 > moved2 ? d2 : moved2;
+      }
+      const int sp = species[i];
+      const double h = X[i * D + kUp<D>];
+      exiting |= exited[i] ? h < watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
+      const double c = drag[sp];
+      for (int d = 0; d < D; ++d) F[i * D + d] = -c * V[i * D + d];
+      F[i * D + kUp<D>] -= mass[sp] * g;
+    }
+    exits_possible = exiting != 0;
+    return moved2;
+  }
+  /// Item i's force start (gravity and drag), after the protocol placed it anew.
+  void start_force_of(ParticleState<D>& s, int i) {
+    const std::array<double, 2> drag = drag_coefficients_now();
+    const int sp = s.species[i];
+    for (int d = 0; d < D; ++d) s.f[i][d] = -drag[sp] * s.v[i][d];
+    s.f[i][kUp<D>] -= s.sp.mass[sp] * gravity_.g();
+  }
+  /// The second sweep: the walls and the pairs added to the started forces (the list as it
+  /// is), then the kick v += f dt / (2m) of velocity_verlet.h, each item kicked as soon as its
+  /// force is complete (SpContact::block_and_kick), the list's late items after every block.
+  /// The forces and velocities are evaluate()'s and kick()'s bits, for every thread count.
+  StepForces forces_and_kick(ParticleState<D>& s, double dt) {
+    contact_.prepare(s);
+    const int nb = list_.blocks();
+    partial_.resize(nb);
+    const typename SpContact<D>::Kick k{0.5 * dt, s.v.data()->data(), s.inv_mass.data(), list_.late_kick()};
+#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
+    for (int b = 0; b < nb; ++b) {
+      for (int i = list_.block_begin(b), hi = list_.block_begin(b + 1); i < hi; ++i) walls_.add_to(s, i, s.f[i]);
+      partial_[b].contact = contact_.block_and_kick(s, s.f, b, k);
+    }
+    typename SpContact<D>::BlockSums contact;
+    for (const BlockPartial& p : partial_) contact.add(p.contact);
+    const double* X = s.x.data()->data();
+    const double* F = s.f.data()->data();
+    double* V = s.v.data()->data();
+    for (int i : list_.late_kick_items()) {
+      const double c = k.half_dt * k.inv_mass[i];
+      for (int d = 0; d < D; ++d) {
+        V[i * D + d] += c * F[i * D + d];
+        contact.checksum += X[i * D + d] + V[i * D + d];
+      }
+    }
+    return {contact.max_overlap, std::isfinite(contact.checksum)};
+  }
   /// Dissipation off: FIRE minimises the potential energy only.
   void set_dissipation(bool on) {
     contact_.set_friction_enabled(on);
@@ -114,6 +208,10 @@ class ForceField {
   std::vector<ForceTerm<D>*> terms() { return {&contact_, &walls_, &gravity_, &drag_}; }
 
  private:
+  /// The drag coefficient of each species, 0 while dissipation is off.
+  std::array<double, 2> drag_coefficients_now() const {
+    return drag_.active() ? drag_.coefficients() : std::array<double, 2>{0, 0};
+  }
   NeighborList<D> list_;
   SpContact<D> contact_;
   HopperWalls<D> walls_;

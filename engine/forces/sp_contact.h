@@ -37,19 +37,38 @@ class SpContact final : public ForceTerm<D> {
   /// order threads finish), so that the totals too are the same for every thread count.
   struct BlockSums {
     double energy = 0, power = 0, max_overlap = 0;
+    double checksum = 0;  ///< block_and_kick(): the sum of the kicked items' x and v (finite?)
     void add(const BlockSums& o) {
       energy += o.energy;
       power += o.power;
       max_overlap = o.max_overlap > max_overlap ? o.max_overlap : max_overlap;
+      checksum += o.checksum;
     }
+  };
+  /// What the step's force pass needs to kick each item as soon as its force is complete
+  /// (ForceField::forces_and_kick): v += (half_dt / m) f, the operations of kick().
+  struct Kick {
+    double half_dt = 0;
+    double* V = nullptr;  ///< the state's velocities, written
+    const double* inv_mass = nullptr;
+    /// NeighborList::late_kick(): items whose velocity another block still reads; the caller
+    /// kicks them once every block is done
+    const std::uint8_t* late = nullptr;
   };
   /// Before block(): the species tables and the list's incoming lists (serial).
   void prepare(const ParticleState<D>& s);
   /// The pairs of block b of the list: forces on the block's own items only, so blocks can
   /// run on different threads (neighbor_list.h, blocks()).
   BlockSums block(const ParticleState<D>& s, VecArray<D>& f, int b) const {
-    if (!friction_on_ || !law_.active()) return loop<Friction::None>(s, f, b);
-    return law_.split() ? loop<Friction::Split>(s, f, b) : loop<Friction::Full>(s, f, b);
+    if (!friction_on_ || !law_.active()) return loop<Friction::None, false>(s, f, b, nullptr);
+    return law_.split() ? loop<Friction::Split, false>(s, f, b, nullptr) : loop<Friction::Full, false>(s, f, b, nullptr);
+  }
+  /// block() for a step: the same forces, no energy or power sums (only the largest overlap),
+  /// and each item that is not late kicked as soon as its force is complete (its row done), while
+  /// it is still in cache: one sweep over the items less per step.
+  BlockSums block_and_kick(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick& k) const {
+    if (!friction_on_ || !law_.active()) return loop<Friction::None, true>(s, f, b, &k);
+    return law_.split() ? loop<Friction::Split, true>(s, f, b, &k) : loop<Friction::Full, true>(s, f, b, &k);
   }
   TermOutput finish(const BlockSums& total) {
     max_overlap_ = total.max_overlap;
@@ -69,11 +88,22 @@ class SpContact final : public ForceTerm<D> {
 
  private:
   enum class Friction { None, Full, Split };
-  template <Friction kFriction>
-  BlockSums loop(const ParticleState<D>& s, VecArray<D>& f, int b) const;
+  /// kKick: block_and_kick() (k its kick), else block() (k null).
+  template <Friction kFriction, bool kKick>
+  BlockSums loop(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick* k) const;
   /// 2D rows two pairs at a time (sp_pairs_sse2.h): the same forces, bit for bit.
-  template <Friction kFriction>
-  BlockSums rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo, int hi) const;
+  template <Friction kFriction, bool kKick>
+  BlockSums rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo, int hi, const Kick* k) const;
+  /// Item i's kick (kick() in velocity_verlet.h, for one item), unless it is late.
+  [[gnu::always_inline]] static inline void kick_item(const Kick& k, const double* X, const double* F, int i,
+                                                       double& checksum) {
+    if (k.late[i]) return;
+    const double c = k.half_dt * k.inv_mass[i];
+    for (int d = 0; d < D; ++d) {
+      k.V[i * D + d] += c * F[i * D + d];
+      checksum += X[i * D + d] + k.V[i * D + d];
+    }
+  }
   /// The pairs of block b with items of earlier blocks, from the block's side (forces only).
   template <Friction kFriction>
   void incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const;
@@ -159,8 +189,9 @@ template <typename SpContact<D>::Friction kFriction>
 }
 
 template <int D>
-template <typename SpContact<D>::Friction kFriction>
-typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f, int b) const {
+template <typename SpContact<D>::Friction kFriction, bool kKick>
+typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f, int b,
+                                                    const Kick* k) const {
   // Plain component arithmetic on the arrays' doubles (a Vec<D> is D packed doubles): the
   // compiler keeps i's sums in registers, where Eigen temporaries taken by reference were
   // spilled to the stack and reloaded with a store-forwarding stall per pair.
@@ -171,12 +202,12 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
   const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
 #if defined(__SSE2__)
   if constexpr (D == 2) {
-    if (!friction_group_ && simd_) return rows_sse2<kFriction>(s, f, b, lo, hi);
+    if (!friction_group_ && simd_) return rows_sse2<kFriction, kKick>(s, f, b, lo, hi, k);
   }
 #endif
   // the sums in locals (registers): accumulated into the returned struct they lived in memory,
   // a store and reload on every pair's dependency chain
-  double energy = 0, power = 0, max_ov = 0;
+  double energy = 0, power = 0, max_ov = 0, checksum = 0;
   for (int i = lo; i < hi; ++i) {
     double xi[D], fi[D];
     for (int d = 0; d < D; ++d) {
@@ -193,12 +224,16 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
         for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
     }
     for (int d = 0; d < D; ++d) F[i * D + d] += fi[d];
+    if constexpr (kKick) kick_item(*k, X, F, i, checksum);
   }
   if (lo > 0) incoming<kFriction>(s, f, b);
   BlockSums sums;
-  sums.energy = energy;
-  sums.power = power;
+  if constexpr (!kKick) {  // else unused: the compiler drops their arithmetic
+    sums.energy = energy;
+    sums.power = power;
+  }
   sums.max_overlap = max_ov;
+  sums.checksum = checksum;
   return sums;
 }
 
@@ -231,9 +266,9 @@ void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) co
 
 #if defined(__SSE2__)
 template <int D>
-template <typename SpContact<D>::Friction kFriction>
+template <typename SpContact<D>::Friction kFriction, bool kKick>
 typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo,
-                                                         int hi) const {
+                                                         int hi, const Kick* k) const {
   constexpr auto kLane = kFriction == Friction::None   ? sse2::Friction::None
                          : kFriction == Friction::Full ? sse2::Friction::Full
                                                        : sse2::Friction::Split;
@@ -251,6 +286,7 @@ typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>&
   const std::uint8_t* species = s.species.data();
   sse2::LaneSums lanes;
   double energy = 0, power = 0, max_ov = 0;  // the odd pair of a row, done as in loop()
+  double checksum = 0;
   for (int i = lo; i < hi; ++i) {
     const int si = species[i];
     const __m128d xi = _mm_loadu_pd(X + 2 * i), vi = _mm_loadu_pd(V + 2 * i);
@@ -258,7 +294,7 @@ typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>&
     const int* p = list_.row_begin(i);
     const int* end = list_.row_end(i);
     for (; end - p >= 2; p += 2)
-      sse2::two_pairs<kLane>(X, V, F, species, si, xi, vi, p[0], p[1], hi, t, law_.mu_n, law_.mu_t, fi, lanes);
+      sse2::two_pairs<kLane, !kKick>(X, V, F, species, si, xi, vi, p[0], p[1], hi, t, law_.mu_n, law_.mu_t, fi, lanes);
     if (p != end) {  // the last, odd pair: the scalar code, after the others as in loop()
       const int j = *p;
       double xs[D], fij[D];
@@ -269,11 +305,15 @@ typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>&
       }
     }
     _mm_storeu_pd(F + 2 * i, _mm_add_pd(_mm_loadu_pd(F + 2 * i), fi));
+    if constexpr (kKick) kick_item(*k, X, F, i, checksum);
   }
   if (lo > 0) incoming<kFriction>(s, f, b);
   BlockSums sums;
-  sums.energy = energy + sse2::sum_lanes(lanes.energy);
-  sums.power = power + sse2::sum_lanes(lanes.power);
+  if constexpr (!kKick) {
+    sums.energy = energy + sse2::sum_lanes(lanes.energy);
+    sums.power = power + sse2::sum_lanes(lanes.power);
+  }
+  sums.checksum = checksum;
   const double lane_max = sse2::max_lanes(lanes.max_ov);
   sums.max_overlap = max_ov > lane_max ? max_ov : lane_max;
   return sums;

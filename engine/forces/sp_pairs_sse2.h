@@ -29,8 +29,9 @@ struct LaneSums {
 enum class Friction { None, Full, Split };
 
 /// Pairs p[0], p[1] (j > i) of row i: forces on i into fi, minus on j if j < hi (j's block is
-/// this one; else j's block adds it from its incoming list).
-template <Friction kFriction>
+/// this one; else j's block adds it from its incoming list). kSums: also the energy and the
+/// friction power (diagnostics; a step needs only the forces and the largest overlap).
+template <Friction kFriction, bool kSums>
 [[gnu::always_inline]] inline void two_pairs(const double* X, const double* V, double* F, const std::uint8_t* species,
                                              int si, __m128d xi, __m128d vi, int ja, int jb, int hi,
                                              const PairTables& t, double mu_n, double mu_t, __m128d& fi,
@@ -47,7 +48,8 @@ template <Friction kFriction>
   const __m128d one = _mm_set1_pd(1.0);
   const __m128d ov = _mm_and_pd(touching, _mm_sub_pd(one, _mm_mul_pd(r, _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta]))));
   // 0.5 * eps * ov * ov, as the scalar (0.5 * eps) * ov * ov
-  sums.energy = _mm_add_pd(sums.energy, _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.half_eps[tb], t.half_eps[ta]), ov), ov));
+  if constexpr (kSums)
+    sums.energy = _mm_add_pd(sums.energy, _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.half_eps[tb], t.half_eps[ta]), ov), ov));
   sums.max_ov = _mm_max_pd(sums.max_ov, ov);
   const __m128d scale = _mm_div_pd(
       _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.eps[tb], t.eps[ta]), ov), _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta])), r);
@@ -77,8 +79,10 @@ template <Friction kFriction>
     }
     ffa = _mm_and_pd(on_a, ffa);
     ffb = _mm_and_pd(on_b, ffb);
-    const __m128d wa = _mm_mul_pd(ffa, dva), wb = _mm_mul_pd(ffb, dvb);
-    sums.power = _mm_add_pd(sums.power, _mm_add_pd(_mm_unpacklo_pd(wa, wb), _mm_unpackhi_pd(wa, wb)));
+    if constexpr (kSums) {
+      const __m128d wa = _mm_mul_pd(ffa, dva), wb = _mm_mul_pd(ffb, dvb);
+      sums.power = _mm_add_pd(sums.power, _mm_add_pd(_mm_unpacklo_pd(wa, wb), _mm_unpackhi_pd(wa, wb)));
+    }
     fa = _mm_add_pd(fa, ffa);
     fb = _mm_add_pd(fb, ffb);
   }

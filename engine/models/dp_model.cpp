@@ -64,7 +64,7 @@ void DpModel::start_flow(ParticleState<2>& bodies) {
 StepReport DpModel::step(ParticleState<2>& bodies, double dt, StepHook<2>& hook) {
   const StepReport r = velocity_verlet_step(dp_.verts(), dp_.forces(), dt, [&](ParticleState<2>&) {
     dp_.sync_bodies(bodies);  // exits are counted when the centroid crosses the orifice
-    hook.between_drift_and_force(bodies, bodies_list_);
+    hook.between_drift_and_force(bodies, bodies_list_, true);
   });
   bodies.step = dp_.verts().step;
   dp_.sync_bodies(bodies);

@@ -18,6 +18,7 @@
 #include "../forces/force_field.h"
 #include "../forces/force_term.h"
 #include "../geometry/hopper.h"
+#include "../integrate/exit_watch.h"
 #include "../integrate/fire.h"
 #include "../integrate/velocity_verlet.h"
 #include "../io/h5.h"
@@ -33,7 +34,11 @@ template <int D>
 class StepHook {
  public:
   virtual ~StepHook() = default;
-  virtual void between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list) = 0;
+  /// exits_possible false: the model's drift saw no body where exit_watch() says the hook has
+  /// work, and the hook may skip its sweep over the bodies.
+  virtual void between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list, bool exits_possible) = 0;
+  /// Where the hook has work (ExitWatch), for bodies of these species.
+  virtual ExitWatch exit_watch(const Species& sp) const = 0;
 };
 
 template <int D>

@@ -65,18 +65,24 @@ void SpModel<D>::start_flow(ParticleState<D>& bodies) {
 
 template <int D>
 StepReport SpModel<D>::step(ParticleState<D>& bodies, double dt, StepHook<D>& hook) {
-  // velocity_verlet_step, with the list kept here: the drift measures the displacements, and a
-  // due rebuild sorts the particles by cell before the protocol counts exits (it holds no index
-  // across steps, and the exit records name ids)
+  // velocity_verlet_step in two sweeps over the particles (ForceField: drift_and_start_forces,
+  // forces_and_kick), with the list kept here: the drift measures the displacements, and a due
+  // rebuild sorts the particles by cell (the forces started with them) before the protocol
+  // counts exits (it holds no index across steps, and the exit records name ids). The same
+  // operations as drift(), evaluate() and kick() one after the other: the same bits
+  // (tests/physics/test_fused_step.cpp). The report holds no energies (compute_forces() has them).
   NeighborList<D>& list = ff_.list();
-  const double moved2 = drift(bodies, dt, list.reference_positions(), ff_.threads());
+  bool exits_possible = true;
+  const double moved2 =
+      ff_.drift_and_start_forces(bodies, dt, list.reference_positions(), hook.exit_watch(bodies.sp), exits_possible);
   if (list.due(moved2)) list.build_sorting(bodies, hopper_, sort_scratch_);
-  hook.between_drift_and_force(bodies, list);
+  hook.between_drift_and_force(bodies, list, exits_possible);
   // a relocation without room, a drained particle: the exits are done with their indices
   if (list.forced()) list.build_sorting(bodies, hopper_, sort_scratch_);
+  const typename ForceField<D>::StepForces out = ff_.forces_and_kick(bodies, dt);
   StepReport r;
-  r.forces = ff_.evaluate(bodies);
-  r.finite = kick(bodies, dt, ff_.threads());
+  r.forces.max_overlap = out.max_overlap;
+  r.finite = out.finite;
   ++bodies.step;
   return r;
 }

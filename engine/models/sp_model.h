@@ -23,7 +23,8 @@ class SpModel final : public HopperModel<D> {
   void start_flow(ParticleState<D>& bodies) override;
   StepReport step(ParticleState<D>& bodies, double dt, StepHook<D>& hook) override;
   void check_step(const StepReport& r, double t, double max_overlap) const override;
-  void reinjected(int, ParticleState<D>&, Rng&) override {}
+  /// Its force start (gravity, drag) for its new velocity: step() started the forces in the drift.
+  void reinjected(int i, ParticleState<D>& bodies, Rng&) override { ff_.start_force_of(bodies, i); }
   void remove_body(int i, ParticleState<D>& bodies) override {
     bodies.remove_swapping_last(i);
     ff_.list().invalidate();

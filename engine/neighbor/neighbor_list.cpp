@@ -66,6 +66,8 @@ void NeighborList<D>::update_incoming() {
   const int nb = blocks();
   receivers_.clear();
   receivers_start_.assign(nb + 1, 0);
+  late_.assign(n, 0);
+  late_items_.clear();
   if (nb == 1) return;
   // counting pass, then fill: rows in increasing i, so each incoming list is increasing
   for (int b = 0; b < nb; ++b) {
@@ -87,6 +89,13 @@ void NeighborList<D>::update_incoming() {
       if (in_start_[j + 1] > in_start_[j]) receivers_.push_back(j);
     receivers_start_[b + 1] = static_cast<int>(receivers_.size());
   }
+  // late kicks: the receivers (their velocity is read by the senders' rows) and the senders
+  // (read by the receivers' incoming lists)
+  for (int j : receivers_) late_[j] = 1;
+  for (int j = 0; j < n; ++j)
+    for (const int* p = in_items_.data() + in_start_[j]; p != in_items_.data() + in_start_[j + 1]; ++p) late_[*p] = 1;
+  for (int i = 0; i < n; ++i)
+    if (late_[i]) late_items_.push_back(i);
 }
 
 template <int D>

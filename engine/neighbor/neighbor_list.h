@@ -77,6 +77,12 @@ class NeighborList {
   /// loop over these, not over all its items).
   const int* receivers_begin(int b) const { return receivers_.data() + receivers_start_[b]; }
   const int* receivers_end(int b) const { return receivers_.data() + receivers_start_[b + 1]; }
+  /// Items whose velocity another block reads during the force pass (receivers, and the items
+  /// of a row that reaches into a later block), increasing; late_kick(i) tells them apart. A
+  /// pass that kicks each item as soon as its force is complete (ForceField::forces_and_kick)
+  /// must leave these until every block is done.
+  const std::vector<int>& late_kick_items() const { return late_items_; }
+  const std::uint8_t* late_kick() const { return late_.data(); }
 
   /// Everything the list holds, for a checkpoint: a resumed run continues with the very list
   /// (and so the rebuild schedule and item order) of the uninterrupted one.
@@ -173,7 +179,8 @@ class NeighborList {
   static constexpr double kLayersPerBlock = 16;
   static constexpr int kMinItemsForBlocks = 1000;
   static constexpr int kMaxBlocks = 64;
-  std::vector<int> in_start_, in_items_, receivers_, receivers_start_;
+  std::vector<int> in_start_, in_items_, receivers_, receivers_start_, late_items_;
+  std::vector<std::uint8_t> late_;
   bool incoming_stale_ = true;
   bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../geometry/hopper.h"
+#include "../integrate/exit_watch.h"
 #include "core/errors.h"
 #include "../state.h"
 #include "flow_record.h"
@@ -25,6 +26,7 @@ class ExitCounter {
     to_reinject_.clear();
     const int n = s.size();
     const double half_w = hopper_.orifice_half_width();
+    const ExitWatch w = watch(s.sp);
     for (int i = 0; i < n; ++i) {
       const double h = s.x[i][kUp<D>];
       if (!s.exited[i]) {
@@ -37,10 +39,17 @@ class ExitCounter {
         rec.exit_size.push_back(s.sp.ref_size[s.species[i]]);
         rec.last_exit_time = t;
         s.exited[i] = 1;
-      } else if (h < -drop_depth_ * s.sigma(i)) {
+      } else if (h < w.exited_below[s.species[i]]) {
         to_reinject_.push_back(i);
       }
     }
+  }
+  /// Instead of update() when a drift saw no particle where watch() says update() has work.
+  void none_to_count() { to_reinject_.clear(); }
+  /// Where update() has work: a particle not yet counted below the orifice plane, or a counted
+  /// one deeper than the drop depth (in its own diameters).
+  ExitWatch watch(const Species& sp) const {
+    return {{-drop_depth_ * sp.sigma[0], -drop_depth_ * sp.sigma[1]}};
   }
   const std::vector<int>& to_reinject() const { return to_reinject_; }
   /// How far beyond the orifice edge a centre may cross the orifice plane and still count as an

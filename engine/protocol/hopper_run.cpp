@@ -192,8 +192,12 @@ void HopperRun<D>::reinject_exited(NeighborList<D>& list) {
 }
 
 template <int D>
-void HopperRun<D>::between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list) {
-  exits_.update(bodies, step_t_next_, rec_);
+void HopperRun<D>::between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list,
+                                           bool exits_possible) {
+  if (exits_possible)
+    exits_.update(bodies, step_t_next_, rec_);
+  else
+    exits_.none_to_count();
   if (exits_.to_reinject().empty()) return;
   if (c_.reinject) {
     reinject_exited(body_list);

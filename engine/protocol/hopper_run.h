@@ -89,7 +89,8 @@ class HopperRun : private StepHook<D> {
  private:
   void step_once();
   /// StepHook: exits counted, exited particles reinjected, between drift and forces.
-  void between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list) override;
+  void between_drift_and_force(ParticleState<D>& bodies, NeighborList<D>& body_list, bool exits_possible) override;
+  ExitWatch exit_watch(const Species& sp) const override { return exits_.watch(sp); }
   /// The reinjection of the exited particles listed by exits_ (list: over the particles, or
   /// over the DP bodies), between drift and force evaluation.
   void reinject_exited(NeighborList<D>& list);

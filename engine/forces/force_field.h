@@ -9,6 +9,7 @@
 
 #include "../config.h"
 #include "../integrate/exit_watch.h"
+#include "../integrate/sp_sweeps.h"
 #include "drag.h"
 #include "gravity.h"
 #include "hopper_walls.h"
@@ -118,7 +119,6 @@ class ForceField {
   /// and velocity needs start_force_of().
   double drift_and_start_forces(ParticleState<D>& s, double dt, const VecArray<D>& reference, const ExitWatch& watch,
                                 bool& exits_possible) {
-    const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
     const int n = s.size();
     double* __restrict X = s.x.data()->data();
     double* __restrict V = s.v.data()->data();
@@ -126,34 +126,19 @@ class ForceField {
     const double* __restrict inv_m = s.inv_mass.data();
     const std::uint8_t* __restrict species = s.species.data();
     const std::uint8_t* __restrict exited = s.exited.data();
-    const bool measure = static_cast<int>(reference.size()) == n;
-    const double* __restrict R = measure ? reference.data()->data() : nullptr;
-    const double g = gravity_.g();
-    const std::array<double, 2> drag = drag_coefficients_now(), mass = s.sp.mass;
+    DriftConstants k;
+    k.dt = dt;
+    k.half_dt = 0.5 * dt;
+    k.half_dt2 = 0.5 * dt * dt;
+    k.reference = static_cast<int>(reference.size()) == n ? reference.data()->data() : nullptr;
+    k.watch = watch;
+    k.g = gravity_.g();
+    k.drag = drag_coefficients_now();
+    k.mass = s.sp.mass;
     double moved2 = 0;
     int exiting = 0;
 #pragma omp parallel for schedule(static) reduction(max : moved2) reduction(| : exiting) num_threads(threads_) if (threads_ > 1)
-    for (int i = 0; i < n; ++i) {
-      for (int d = 0; d < D; ++d) {
-        const double a = F[i * D + d] * inv_m[i];
-        X[i * D + d] += dt * V[i * D + d] + half_dt2 * a;
-        V[i * D + d] += half_dt * a;
-      }
-      if (measure) {
-        double d2 = 0;
-        for (int d = 0; d < D; ++d) {
-          const double u = X[i * D + d] - R[i * D + d];
-          d2 = d == 0 ? u * u : d2 + u * u;
-        }
-        moved2 = d2 > moved2 ? d2 : moved2;
-      }
-      const int sp = species[i];
-      const double h = X[i * D + kUp<D>];
-      exiting |= exited[i] ? h < watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
-      const double c = drag[sp];
-      for (int d = 0; d < D; ++d) F[i * D + d] = -c * V[i * D + d];
-      F[i * D + kUp<D>] -= mass[sp] * g;
-    }
+    for (int i = 0; i < n; ++i) drift_and_start_force<D>(i, X, V, F, inv_m, species, exited, k, moved2, exiting);
     exits_possible = exiting != 0;
     return moved2;
   }
@@ -183,13 +168,7 @@ class ForceField {
     const double* X = s.x.data()->data();
     const double* F = s.f.data()->data();
     double* V = s.v.data()->data();
-    for (int i : list_.late_kick_items()) {
-      const double c = k.half_dt * k.inv_mass[i];
-      for (int d = 0; d < D; ++d) {
-        V[i * D + d] += c * F[i * D + d];
-        contact.checksum += X[i * D + d] + V[i * D + d];
-      }
-    }
+    for (int i : list_.late_kick_items()) kick_one<D>(i, X, V, F, k.half_dt, k.inv_mass, contact.checksum);
     return {contact.max_overlap, std::isfinite(contact.checksum)};
   }
   /// Dissipation off: FIRE minimises the potential energy only.

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "../integrate/sp_sweeps.h"
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
 #include "kinetic_friction.h"
@@ -91,18 +92,19 @@ class SpContact final : public ForceTerm<D> {
   /// kKick: block_and_kick() (k its kick), else block() (k null).
   template <Friction kFriction, bool kKick>
   BlockSums loop(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick* k) const;
-  /// 2D rows two pairs at a time (sp_pairs_sse2.h): the same forces, bit for bit.
+  /// Block b's pair run (NeighborList::pairs_begin): each pair's force added to i, and
+  /// subtracted from j if j is this block's (else j's block adds it: incoming()). The pairs
+  /// only: loop() adds the incoming pairs and kicks.
   template <Friction kFriction, bool kKick>
-  BlockSums rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo, int hi, const Kick* k) const;
+  BlockSums pairs(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const;
+  /// 2D: block b's pair run two pairs at a time (sp_pairs_sse2.h), the same forces bit for
+  /// bit; the pairs only (loop() adds the incoming pairs and kicks).
+  template <Friction kFriction, bool kKick>
+  BlockSums pairs_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const;
   /// Item i's kick (kick() in velocity_verlet.h, for one item), unless it is late.
   [[gnu::always_inline]] static inline void kick_item(const Kick& k, const double* X, const double* F, int i,
                                                        double& checksum) {
-    if (k.late[i]) return;
-    const double c = k.half_dt * k.inv_mass[i];
-    for (int d = 0; d < D; ++d) {
-      k.V[i * D + d] += c * F[i * D + d];
-      checksum += X[i * D + d] + k.V[i * D + d];
-    }
+    if (!k.late[i]) kick_one<D>(i, X, k.V, F, k.half_dt, k.inv_mass, checksum);
   }
   /// The pairs of block b with items of earlier blocks, from the block's side (forces only).
   template <Friction kFriction>
@@ -192,48 +194,54 @@ template <int D>
 template <typename SpContact<D>::Friction kFriction, bool kKick>
 typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f, int b,
                                                     const Kick* k) const {
-  // Plain component arithmetic on the arrays' doubles (a Vec<D> is D packed doubles): the
-  // compiler keeps i's sums in registers, where Eigen temporaries taken by reference were
-  // spilled to the stack and reloaded with a store-forwarding stall per pair.
+  const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
+  BlockSums sums = [&] {
+#if defined(__SSE2__)
+    if constexpr (D == 2)
+      if (!friction_group_ && simd_) return pairs_sse2<kFriction, kKick>(s, f, b, hi);
+#endif
+    return pairs<kFriction, kKick>(s, f, b, hi);
+  }();
+  if (lo > 0) incoming<kFriction>(s, f, b);
+  if constexpr (kKick) {  // every force of the block is complete
+    const double* X = s.x.data()->data();
+    const double* F = f.data()->data();
+    double checksum = 0;
+    for (int i = lo; i < hi; ++i) kick_item(*k, X, F, i, checksum);
+    sums.checksum = checksum;
+  }
+  return sums;
+}
+
+template <int D>
+template <typename SpContact<D>::Friction kFriction, bool kKick>
+typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const {
+  // Plain component arithmetic on the arrays' doubles (a Vec<D> is D packed doubles): where
+  // Eigen temporaries were taken by reference, GCC spilled them to the stack and reloaded them
+  // with a store-forwarding stall per pair.
   const double* X = s.x.data()->data();
   const double* V = s.v.data()->data();
   double* F = f.data()->data();
   const std::uint8_t* species = s.species.data();
-  const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
-#if defined(__SSE2__)
-  if constexpr (D == 2) {
-    if (!friction_group_ && simd_) return rows_sse2<kFriction, kKick>(s, f, b, lo, hi, k);
-  }
-#endif
+  const int* I = list_.pair_i();
+  const int* J = list_.pair_j();
   // the sums in locals (registers): accumulated into the returned struct they lived in memory,
   // a store and reload on every pair's dependency chain
-  double energy = 0, power = 0, max_ov = 0, checksum = 0;
-  for (int i = lo; i < hi; ++i) {
-    double xi[D], fi[D];
-    for (int d = 0; d < D; ++d) {
-      xi[d] = X[i * D + d];
-      fi[d] = 0;
-    }
-    const int si = species[i];
-    for (const int *p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
-      const int j = *p;
-      double fij[D];
-      if (!touching_pair<kFriction>(X, V, species, i, xi, si, j, fij, energy, power, max_ov)) continue;
-      for (int d = 0; d < D; ++d) fi[d] += fij[d];
-      if (j < hi)  // j is this block's: its share now; else j's block adds it (incoming)
-        for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
-    }
-    for (int d = 0; d < D; ++d) F[i * D + d] += fi[d];
-    if constexpr (kKick) kick_item(*k, X, F, i, checksum);
+  double energy = 0, power = 0, max_ov = 0;
+  for (int q = list_.pairs_begin(b), q_end = list_.pairs_begin(b + 1); q < q_end; ++q) {
+    const int i = I[q], j = J[q];
+    double fij[D];
+    if (!touching_pair<kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_ov)) continue;
+    for (int d = 0; d < D; ++d) F[i * D + d] += fij[d];
+    if (j < hi)
+      for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
   }
-  if (lo > 0) incoming<kFriction>(s, f, b);
   BlockSums sums;
   if constexpr (!kKick) {  // else unused: the compiler drops their arithmetic
     sums.energy = energy;
     sums.power = power;
   }
   sums.max_overlap = max_ov;
-  sums.checksum = checksum;
   return sums;
 }
 
@@ -267,8 +275,8 @@ void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) co
 #if defined(__SSE2__)
 template <int D>
 template <typename SpContact<D>::Friction kFriction, bool kKick>
-typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int lo,
-                                                         int hi, const Kick* k) const {
+typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>& s, VecArray<D>& f, int b,
+                                                          int hi) const {
   constexpr auto kLane = kFriction == Friction::None   ? sse2::Friction::None
                          : kFriction == Friction::Full ? sse2::Friction::Full
                                                        : sse2::Friction::Split;
@@ -284,36 +292,28 @@ typename SpContact<D>::BlockSums SpContact<D>::rows_sse2(const ParticleState<D>&
   const double* V = s.v.data()->data();
   double* F = f.data()->data();
   const std::uint8_t* species = s.species.data();
+  const int* I = list_.pair_i();
+  const int* J = list_.pair_j();
   sse2::LaneSums lanes;
-  double energy = 0, power = 0, max_ov = 0;  // the odd pair of a row, done as in loop()
-  double checksum = 0;
-  for (int i = lo; i < hi; ++i) {
-    const int si = species[i];
-    const __m128d xi = _mm_loadu_pd(X + 2 * i), vi = _mm_loadu_pd(V + 2 * i);
-    __m128d fi = _mm_setzero_pd();
-    const int* p = list_.row_begin(i);
-    const int* end = list_.row_end(i);
-    for (; end - p >= 2; p += 2)
-      sse2::two_pairs<kLane, !kKick>(X, V, F, species, si, xi, vi, p[0], p[1], hi, t, law_.mu_n, law_.mu_t, fi, lanes);
-    if (p != end) {  // the last, odd pair: the scalar code, after the others as in loop()
-      const int j = *p;
-      double xs[D], fij[D];
-      _mm_storeu_pd(xs, xi);
-      if (touching_pair<kFriction>(X, V, species, i, xs, si, j, fij, energy, power, max_ov)) {
-        fi = _mm_add_pd(fi, _mm_loadu_pd(fij));
-        if (j < hi) _mm_storeu_pd(F + 2 * j, _mm_sub_pd(_mm_loadu_pd(F + 2 * j), _mm_loadu_pd(fij)));
-      }
+  int q = list_.pairs_begin(b);
+  const int q_end = list_.pairs_begin(b + 1);
+  for (; q_end - q >= 2; q += 2)
+    sse2::two_pairs<kLane, !kKick>(X, V, F, species, I[q], J[q], I[q + 1], J[q + 1], hi, t, law_.mu_n, law_.mu_t, lanes);
+  double energy = 0, power = 0, max_ov = 0;
+  if (q != q_end) {  // the last, odd pair: the scalar code, after the others as in loop()
+    const int i = I[q], j = J[q];
+    double fij[D];
+    if (touching_pair<kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_ov)) {
+      for (int d = 0; d < D; ++d) F[i * D + d] += fij[d];
+      if (j < hi)
+        for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
     }
-    _mm_storeu_pd(F + 2 * i, _mm_add_pd(_mm_loadu_pd(F + 2 * i), fi));
-    if constexpr (kKick) kick_item(*k, X, F, i, checksum);
   }
-  if (lo > 0) incoming<kFriction>(s, f, b);
   BlockSums sums;
   if constexpr (!kKick) {
     sums.energy = energy + sse2::sum_lanes(lanes.energy);
     sums.power = power + sse2::sum_lanes(lanes.power);
   }
-  sums.checksum = checksum;
   const double lane_max = sse2::max_lanes(lanes.max_ov);
   sums.max_overlap = max_ov > lane_max ? max_ov : lane_max;
   return sums;

@@ -1,10 +1,10 @@
 #pragma once
 /// \file sp_pairs_sse2.h
-/// \brief One row of the 2D SP pair loop, two pairs at a time in SSE2 (every x86-64 has it, so
-/// no host tuning and the same bits on every node).
+/// \brief The 2D SP pair loop (a block's pair run), two pairs at a time in SSE2 (every x86-64
+/// has it, so no host tuning and the same bits on every node).
 ///
-/// Why: a row's cost is the square root and the division of each touching pair; sqrtpd and
-/// divpd do two pairs for about the price of one. Each lane does exactly the scalar pair's
+/// Why: a pair's cost is its square root and division; sqrtpd and divpd do two pairs for about
+/// the price of one. Each lane does exactly the scalar pair's
 /// operations in the scalar order (SpContact::pair_force), so the forces are the same bits as
 /// the scalar loop's (tests/physics/test_force_blocks.cpp compares them); a pair that does not
 /// touch gets overlap 0 and adds +-0. Only the energy and friction-power sums (diagnostics) add
@@ -28,20 +28,21 @@ struct LaneSums {
 
 enum class Friction { None, Full, Split };
 
-/// Pairs p[0], p[1] (j > i) of row i: forces on i into fi, minus on j if j < hi (j's block is
-/// this one; else j's block adds it from its incoming list). kSums: also the energy and the
+/// Pairs (ia, ja) and (ib, jb) of a block's pair run: each pair's force added to its i and
+/// subtracted from its j if j < hi (j's block is this one; else j's block adds it from its
+/// incoming list), pair a first, as the scalar loop does. kSums: also the energy and the
 /// friction power (diagnostics; a step needs only the forces and the largest overlap).
 template <Friction kFriction, bool kSums>
 [[gnu::always_inline]] inline void two_pairs(const double* X, const double* V, double* F, const std::uint8_t* species,
-                                             int si, __m128d xi, __m128d vi, int ja, int jb, int hi,
-                                             const PairTables& t, double mu_n, double mu_t, __m128d& fi,
-                                             LaneSums& sums) {
-  const __m128d dxa = _mm_sub_pd(xi, _mm_loadu_pd(X + 2 * ja));
-  const __m128d dxb = _mm_sub_pd(xi, _mm_loadu_pd(X + 2 * jb));
+                                             int ia, int ja, int ib, int jb, int hi, const PairTables& t, double mu_n,
+                                             double mu_t, LaneSums& sums) {
+  const __m128d xia = _mm_loadu_pd(X + 2 * ia), xib = _mm_loadu_pd(X + 2 * ib);
+  const __m128d dxa = _mm_sub_pd(xia, _mm_loadu_pd(X + 2 * ja));
+  const __m128d dxb = _mm_sub_pd(xib, _mm_loadu_pd(X + 2 * jb));
   const __m128d sqa = _mm_mul_pd(dxa, dxa), sqb = _mm_mul_pd(dxb, dxb);
   // r2 = dx0^2 + dx1^2 for each pair: lane 0 pair a, lane 1 pair b
   const __m128d r2 = _mm_add_pd(_mm_unpacklo_pd(sqa, sqb), _mm_unpackhi_pd(sqa, sqb));
-  const int ta = 2 * si + species[ja], tb = 2 * si + species[jb];
+  const int ta = 2 * species[ia] + species[ja], tb = 2 * species[ib] + species[jb];
   const __m128d touching = _mm_cmplt_pd(r2, _mm_set_pd(t.sig2[tb], t.sig2[ta]));
   if (_mm_movemask_pd(touching) == 0) return;
   const __m128d r = _mm_sqrt_pd(r2);
@@ -57,8 +58,8 @@ template <Friction kFriction, bool kSums>
   __m128d fb = _mm_mul_pd(_mm_unpackhi_pd(scale, scale), dxb);
   if constexpr (kFriction != Friction::None) {
     const __m128d on_a = _mm_unpacklo_pd(touching, touching), on_b = _mm_unpackhi_pd(touching, touching);
-    const __m128d dva = _mm_sub_pd(vi, _mm_loadu_pd(V + 2 * ja));
-    const __m128d dvb = _mm_sub_pd(vi, _mm_loadu_pd(V + 2 * jb));
+    const __m128d dva = _mm_sub_pd(_mm_loadu_pd(V + 2 * ia), _mm_loadu_pd(V + 2 * ja));
+    const __m128d dvb = _mm_sub_pd(_mm_loadu_pd(V + 2 * ib), _mm_loadu_pd(V + 2 * jb));
     __m128d ffa, ffb;
     if constexpr (kFriction == Friction::Split) {
       const __m128d inv_r = _mm_div_pd(one, r);
@@ -86,9 +87,10 @@ template <Friction kFriction, bool kSums>
     fa = _mm_add_pd(fa, ffa);
     fb = _mm_add_pd(fb, ffb);
   }
-  fi = _mm_add_pd(fi, fa);
+  // in the scalar order: i then j of pair a, then of pair b (ib may be ia or ja)
+  _mm_storeu_pd(F + 2 * ia, _mm_add_pd(_mm_loadu_pd(F + 2 * ia), fa));
   if (ja < hi) _mm_storeu_pd(F + 2 * ja, _mm_sub_pd(_mm_loadu_pd(F + 2 * ja), fa));
-  fi = _mm_add_pd(fi, fb);
+  _mm_storeu_pd(F + 2 * ib, _mm_add_pd(_mm_loadu_pd(F + 2 * ib), fb));
   if (jb < hi) _mm_storeu_pd(F + 2 * jb, _mm_sub_pd(_mm_loadu_pd(F + 2 * jb), fb));
 }
 

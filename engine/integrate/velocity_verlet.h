@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "../forces/force_field.h"
+#include "sp_sweeps.h"
 
 namespace beverloo {
 
@@ -67,13 +68,7 @@ bool kick(ParticleState<D>& s, double dt, int threads = 1) {
   const double* __restrict inv_m = s.inv_mass.data();
   double checksum = 0;  // only its finiteness is used: any summation order will do
 #pragma omp parallel for schedule(static) reduction(+ : checksum) num_threads(threads) if (threads > 1)
-  for (int i = 0; i < n; ++i) {
-    const double c = half_dt * inv_m[i];
-    for (int d = 0; d < D; ++d) {
-      V[i * D + d] += c * F[i * D + d];
-      checksum += X[i * D + d] + V[i * D + d];
-    }
-  }
+  for (int i = 0; i < n; ++i) kick_one<D>(i, X, V, F, half_dt, inv_m, checksum);
   return std::isfinite(checksum);
 }
 

@@ -57,9 +57,9 @@ void NeighborList<D>::bin(const ParticleState<D>& s) {
 }
 
 template <int D>
-void NeighborList<D>::update_incoming() {
-  if (!incoming_stale_) return;
-  incoming_stale_ = false;
+void NeighborList<D>::update_block_lists() {
+  if (!block_lists_stale_) return;
+  block_lists_stale_ = false;
   const int n = static_cast<int>(row_end_.size());
   in_start_.assign(n + 2, 0);
   in_items_.clear();
@@ -68,6 +68,17 @@ void NeighborList<D>::update_incoming() {
   receivers_start_.assign(nb + 1, 0);
   late_.assign(n, 0);
   late_items_.clear();
+  pair_i_.clear();
+  pair_j_.clear();
+  pair_start_.assign(nb + 1, 0);
+  for (int b = 0; b < nb; ++b) {
+    for (int i = block_begin(b), hi = block_begin(b + 1); i < hi; ++i)
+      for (const int* p = row_begin(i); p != row_end(i); ++p) {
+        pair_i_.push_back(i);
+        pair_j_.push_back(*p);
+      }
+    pair_start_[b + 1] = static_cast<int>(pair_i_.size());
+  }
   if (nb == 1) return;
   // counting pass, then fill: rows in increasing i, so each incoming list is increasing
   for (int b = 0; b < nb; ++b) {
@@ -100,7 +111,7 @@ void NeighborList<D>::update_incoming() {
 
 template <int D>
 void NeighborList<D>::start_build(const ParticleState<D>& s) {
-  incoming_stale_ = true;
+  block_lists_stale_ = true;
   force_ = false;
   ++builds_;
   x_ref_.assign(s.x.begin(), s.x.end());
@@ -251,13 +262,13 @@ void NeighborList<D>::restore(Snapshot snap, int n) {
   wall_mask_ = std::move(snap.wall_mask);
   builds_ = snap.builds;
   force_ = false;
-  incoming_stale_ = true;
+  block_lists_stale_ = true;
 }
 
 template <int D>
 void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
   if (force_) return;  // a rebuild is due anyway
-  incoming_stale_ = true;
+  block_lists_stale_ = true;
   const int n = s.size();
   // out: its own row, and its entries in the rows of lower-numbered particles
   row_end_[i] = row_start_[i];

@@ -63,14 +63,22 @@ class NeighborList {
   /// so that its models' sums stay in the order they always had.
   void use_blocks(bool on) {
     blocks_on_ = on;
-    incoming_stale_ = true;
+    block_lists_stale_ = true;
   }
   int block_begin(int b) const {
     const long n = static_cast<long>(row_end_.size());
     return static_cast<int>(n * b / blocks());
   }
-  /// The incoming lists (brought up to date if rows changed since they were made).
-  void update_incoming();
+  /// The blocks' pair runs, incoming lists and late kicks (brought up to date if rows changed
+  /// since they were made).
+  void update_block_lists();
+  /// Block b's pairs as one run: (pair_i()[k], pair_j()[k]) for k in pairs_begin(b) ..
+  /// pairs_begin(b + 1), the rows of the block in order, each row's entries in order. The force
+  /// loops walk this run rather than row by row: rows are short (2-3 entries in a 2D pile)
+  /// and of varying length, and a loop per row paid a mispredicted branch at nearly every row's end.
+  int pairs_begin(int b) const { return pair_start_[b]; }
+  const int* pair_i() const { return pair_i_.data(); }
+  const int* pair_j() const { return pair_j_.data(); }
   const int* incoming_begin(int j) const { return in_items_.data() + in_start_[j]; }
   const int* incoming_end(int j) const { return in_items_.data() + in_start_[j + 1]; }
   /// The items of block b with a non-empty incoming list, increasing (a block's boundary: a
@@ -181,7 +189,8 @@ class NeighborList {
   static constexpr int kMaxBlocks = 64;
   std::vector<int> in_start_, in_items_, receivers_, receivers_start_, late_items_;
   std::vector<std::uint8_t> late_;
-  bool incoming_stale_ = true;
+  std::vector<int> pair_i_, pair_j_, pair_start_;
+  bool block_lists_stale_ = true;
   bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing

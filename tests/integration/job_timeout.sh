@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # --job-timeout: an attempt that runs too long is asked to checkpoint and stop, is classed as
-# "timeout" (no retry budget used), and later attempts resume it until it completes.
+# "timeout" (no retry budget used), and later attempts resume it until it completes. The job
+# must outlast the 0.8 s timeout by far on a fast engine: at 150 t0 engine 0.4.0 finished it first.
 source "$(dirname "$0")/lib.sh"
 cat > "$WORK/sweep.json" <<'J'
 {"name": "slow", "base": {"N": 300, "W": 12, "E_sp": 100, "zeta": 0.3, "mu": 0, "w": 4},
- "run": {"t_max": 150, "target_rel_err": 1e-6, "min_window": 20, "checkpoint_interval": 2}}
+ "run": {"t_max": 600, "target_rel_err": 1e-6, "min_window": 20, "checkpoint_interval": 2}}
 J
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/c" --workers 1 --job-timeout 0.8 --progress quiet
 q() { sqlite3 "$WORK/c/campaign.sqlite" "$1"; }

@@ -147,8 +147,8 @@ TEST(Sweep, JobKeysAreStableGoldenValues) {
   const auto jobs = expand({{"base", {{"N", 400}, {"W", 25}, {"E_sp", 100}}},
                             {"sweep", {{"product", {{{"lambda", {0, "inf"}}}, {{"w", {3, 8}}}}}}}});
   EXPECT_EQ(jobs[0].key.size(), 64u);
-  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.3.0");
-  EXPECT_EQ(jobs[0].key, "edbc07c393dd7741ad01b37b1d709514228bd5fa4074bec3d8de0418deeb86d1");
+  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.4.0");
+  EXPECT_EQ(jobs[0].key, "e2c9a09a1162eb0a755a822447167708936bf735832a27486f866e20eef3d545");
 }
 
 TEST(Sweep, KeyIsSensitiveToEveryParameterButNotToRunBookkeeping) {

@@ -1,0 +1,104 @@
+#pragma once
+/// \file sp_sweeps.h
+/// \brief The per-particle work of the SP step's two sweeps (ForceField::drift_and_start_forces,
+/// SpContact::block_and_kick), one particle at a time: the drift with the displacement and
+/// exit tests and the start of the new force, and the kick.
+///
+/// The operations are those of drift(), ForceField::evaluate()'s force start and kick() (in
+/// velocity_verlet.h and force_field.h), in their order, so the results are their bits
+/// (tests/physics/test_fused_step.cpp). In 2D a particle's two components sit in one SSE2
+/// register: the same IEEE operations per component, in about half the instructions (every
+/// x86-64 has SSE2: no host tuning, the same bits on every node).
+#include <array>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "../vec.h"
+#include "exit_watch.h"
+
+namespace beverloo {
+
+/// What the drift sweep needs beside the particle arrays.
+struct DriftConstants {
+  double dt = 0, half_dt = 0, half_dt2 = 0;
+  const double* reference = nullptr;  ///< the list's build positions (D per particle); null: no test
+  ExitWatch watch;
+  double g = 0;                       ///< gravity
+  std::array<double, 2> drag{}, mass{};  ///< per species
+};
+
+/// Particle i: x += v dt + a dt^2/2, v += a dt/2 (a = f/m); its squared displacement from the
+/// reference into moved2 (a running max); whether the exit bookkeeping has work for it into
+/// exiting; then f = -c v - m g e_up (drag and gravity at the new x and v).
+template <int D>
+[[gnu::always_inline]] inline void drift_and_start_force(int i, double* X, double* V, double* F, const double* inv_m,
+                                                         const std::uint8_t* species, const std::uint8_t* exited,
+                                                         const DriftConstants& k, double& moved2, int& exiting) {
+  const int sp = species[i];
+#if defined(__SSE2__)
+  if constexpr (D == 2) {
+    const __m128d a = _mm_mul_pd(_mm_loadu_pd(F + 2 * i), _mm_set1_pd(inv_m[i]));
+    const __m128d v = _mm_loadu_pd(V + 2 * i);
+    const __m128d x = _mm_add_pd(_mm_loadu_pd(X + 2 * i),
+                                 _mm_add_pd(_mm_mul_pd(_mm_set1_pd(k.dt), v), _mm_mul_pd(_mm_set1_pd(k.half_dt2), a)));
+    const __m128d v_new = _mm_add_pd(v, _mm_mul_pd(_mm_set1_pd(k.half_dt), a));
+    _mm_storeu_pd(X + 2 * i, x);
+    _mm_storeu_pd(V + 2 * i, v_new);
+    if (k.reference) {
+      const __m128d u = _mm_sub_pd(x, _mm_loadu_pd(k.reference + 2 * i));
+      const __m128d uu = _mm_mul_pd(u, u);
+      const double d2 = _mm_cvtsd_f64(_mm_add_sd(uu, _mm_unpackhi_pd(uu, uu)));  // u0^2 + u1^2
+      moved2 = d2 > moved2 ? d2 : moved2;
+    }
+    const double h = _mm_cvtsd_f64(_mm_unpackhi_pd(x, x));
+    exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
+    // (-c v0, -c v1 - m g): the lane without gravity subtracts +0, which leaves -c v0 as it is
+    const __m128d f = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(-k.drag[sp]), v_new), _mm_set_pd(k.mass[sp] * k.g, 0.0));
+    _mm_storeu_pd(F + 2 * i, f);
+    return;
+  }
+#endif
+  for (int d = 0; d < D; ++d) {
+    const double a = F[i * D + d] * inv_m[i];
+    X[i * D + d] += k.dt * V[i * D + d] + k.half_dt2 * a;
+    V[i * D + d] += k.half_dt * a;
+  }
+  if (k.reference) {
+    double d2 = 0;
+    for (int d = 0; d < D; ++d) {
+      const double u = X[i * D + d] - k.reference[i * D + d];
+      d2 = d == 0 ? u * u : d2 + u * u;
+    }
+    moved2 = d2 > moved2 ? d2 : moved2;
+  }
+  const double h = X[i * D + kUp<D>];
+  exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
+  const double c = k.drag[sp];
+  for (int d = 0; d < D; ++d) F[i * D + d] = -c * V[i * D + d];
+  F[i * D + kUp<D>] -= k.mass[sp] * k.g;
+}
+
+/// Particle i's kick v += (dt/2 / m) f; x + v of each component into checksum (finite?).
+template <int D>
+[[gnu::always_inline]] inline void kick_one(int i, const double* X, double* V, const double* F, double half_dt,
+                                            const double* inv_m, double& checksum) {
+  const double c = half_dt * inv_m[i];
+#if defined(__SSE2__)
+  if constexpr (D == 2) {
+    const __m128d v = _mm_add_pd(_mm_loadu_pd(V + 2 * i), _mm_mul_pd(_mm_set1_pd(c), _mm_loadu_pd(F + 2 * i)));
+    _mm_storeu_pd(V + 2 * i, v);
+    const __m128d xv = _mm_add_pd(_mm_loadu_pd(X + 2 * i), v);
+    checksum += _mm_cvtsd_f64(xv) + _mm_cvtsd_f64(_mm_unpackhi_pd(xv, xv));
+    return;
+  }
+#endif
+  for (int d = 0; d < D; ++d) {
+    V[i * D + d] += c * F[i * D + d];
+    checksum += X[i * D + d] + V[i * D + d];
+  }
+}
+
+}  // namespace beverloo

@@ -81,7 +81,8 @@ class ForceField {
         U_gravity += m * g * X[i * D + kUp<D>];
         P_drag -= c * v2;
       }
-      for (int i = lo; i < hi; ++i) U_wall += walls_.add_to(s, i, s.f[i]);  // 0 unless a wall is near
+      for (const int *w = list_.wall_items_begin(b), *end = list_.wall_items_end(b); w != end; ++w)
+        U_wall += walls_.add_to(s, *w, s.f[*w]);
       BlockPartial& out = partial_[b];
       out.contact = contact_.block(s, s.f, b);
       out.U_gravity = U_gravity;
@@ -110,37 +111,38 @@ class ForceField {
   };
 
   /// The first of a step's two sweeps over the items (SpModel::step): the drift of
-  /// velocity_verlet.h (x += v dt + a dt^2/2, v += a dt/2, a = f/m), the largest squared
-  /// displacement from `reference` (returned; 0 if it is not one position per item), whether
+  /// velocity_verlet.h (x += v dt + a dt^2/2, v += a dt/2, a = f/m), whether an item moved far
+  /// enough from the list's reference positions for a rebuild (returned; true if the list has
+  /// none), whether
   /// an item is where the exit bookkeeping has work (exits_possible, see ExitWatch), and the
   /// start of the new force: f = gravity + drag at (x(t+dt), v~), as evaluate() starts it.
   /// One pass instead of three (drift, exit test, force start); the same operations on each
   /// item, so the same bits. Between this and forces_and_kick(), an item given a new position
   /// and velocity needs start_force_of().
-  double drift_and_start_forces(ParticleState<D>& s, double dt, const VecArray<D>& reference, const ExitWatch& watch,
-                                bool& exits_possible) {
+  bool drift_and_start_forces(ParticleState<D>& s, double dt, const ExitWatch& watch, bool& exits_possible) {
     const int n = s.size();
-    double* __restrict X = s.x.data()->data();
-    double* __restrict V = s.v.data()->data();
-    double* __restrict F = s.f.data()->data();
-    const double* __restrict inv_m = s.inv_mass.data();
-    const std::uint8_t* __restrict species = s.species.data();
-    const std::uint8_t* __restrict exited = s.exited.data();
     DriftConstants k;
     k.dt = dt;
     k.half_dt = 0.5 * dt;
     k.half_dt2 = 0.5 * dt * dt;
+    const VecArray<D>& reference = list_.reference_positions();
     k.reference = static_cast<int>(reference.size()) == n ? reference.data()->data() : nullptr;
+    k.limit2 = list_.rebuild_distance2();
     k.watch = watch;
     k.g = gravity_.g();
     k.drag = drag_coefficients_now();
     k.mass = s.sp.mass;
-    double moved2 = 0;
-    int exiting = 0;
-#pragma omp parallel for schedule(static) reduction(max : moved2) reduction(| : exiting) num_threads(threads_) if (threads_ > 1)
-    for (int i = 0; i < n; ++i) drift_and_start_force<D>(i, X, V, F, inv_m, species, exited, k, moved2, exiting);
+    double* X = s.x.data()->data();
+    double* V = s.v.data()->data();
+    double* F = s.f.data()->data();
+    int moved = 0, exiting = 0;
+    // one chunk per thread (a chunk's constants are its own copies, see drift_range)
+#pragma omp parallel for schedule(static) reduction(| : moved, exiting) num_threads(threads_) if (threads_ > 1)
+    for (int c = 0; c < threads_; ++c)
+      moved |= drift_range<D>(int(long(n) * c / threads_), int(long(n) * (c + 1) / threads_), X, V, F,
+                              s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
     exits_possible = exiting != 0;
-    return moved2;
+    return moved != 0 || !k.reference;
   }
   /// Item i's force start (gravity and drag), after the protocol placed it anew.
   void start_force_of(ParticleState<D>& s, int i) {
@@ -160,7 +162,8 @@ class ForceField {
     const typename SpContact<D>::Kick k{0.5 * dt, s.v.data()->data(), s.inv_mass.data(), list_.late_kick()};
 #pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
     for (int b = 0; b < nb; ++b) {
-      for (int i = list_.block_begin(b), hi = list_.block_begin(b + 1); i < hi; ++i) walls_.add_to(s, i, s.f[i]);
+      for (const int *i = list_.wall_items_begin(b), *end = list_.wall_items_end(b); i != end; ++i)
+        walls_.add_to(s, *i, s.f[*i]);
       partial_[b].contact = contact_.block_and_kick(s, s.f, b, k);
     }
     typename SpContact<D>::BlockSums contact;
@@ -168,8 +171,12 @@ class ForceField {
     const double* X = s.x.data()->data();
     const double* F = s.f.data()->data();
     double* V = s.v.data()->data();
-    for (int i : list_.late_kick_items()) kick_one<D>(i, X, V, F, k.half_dt, k.inv_mass, contact.checksum);
-    return {contact.max_overlap, std::isfinite(contact.checksum)};
+    bool bad = contact.nonfinite;
+    for (int i : list_.late_kick_items()) {
+      const double t = kick_one<D>(i, X, V, F, k.half_dt, k.inv_mass);
+      bad = bad || !(t - t == 0);
+    }
+    return {contact.max_overlap, !bad};
   }
   /// Dissipation off: FIRE minimises the potential energy only.
   void set_dissipation(bool on) {

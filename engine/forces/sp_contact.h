@@ -38,12 +38,12 @@ class SpContact final : public ForceTerm<D> {
   /// order threads finish), so that the totals too are the same for every thread count.
   struct BlockSums {
     double energy = 0, power = 0, max_overlap = 0;
-    double checksum = 0;  ///< block_and_kick(): the sum of the kicked items' x and v (finite?)
+    bool nonfinite = false;  ///< block_and_kick(): a kicked item's position or velocity is not finite
     void add(const BlockSums& o) {
       energy += o.energy;
       power += o.power;
       max_overlap = o.max_overlap > max_overlap ? o.max_overlap : max_overlap;
-      checksum += o.checksum;
+      nonfinite = nonfinite || o.nonfinite;
     }
   };
   /// What the step's force pass needs to kick each item as soon as its force is complete
@@ -101,11 +101,6 @@ class SpContact final : public ForceTerm<D> {
   /// bit; the pairs only (loop() adds the incoming pairs and kicks).
   template <Friction kFriction, bool kKick>
   BlockSums pairs_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const;
-  /// Item i's kick (kick() in velocity_verlet.h, for one item), unless it is late.
-  [[gnu::always_inline]] static inline void kick_item(const Kick& k, const double* X, const double* F, int i,
-                                                       double& checksum) {
-    if (!k.late[i]) kick_one<D>(i, X, k.V, F, k.half_dt, k.inv_mass, checksum);
-  }
   /// The pairs of block b with items of earlier blocks, from the block's side (forces only).
   template <Friction kFriction>
   void incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const;
@@ -206,9 +201,7 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
   if constexpr (kKick) {  // every force of the block is complete
     const double* X = s.x.data()->data();
     const double* F = f.data()->data();
-    double checksum = 0;
-    for (int i = lo; i < hi; ++i) kick_item(*k, X, F, i, checksum);
-    sums.checksum = checksum;
+    sums.nonfinite = kick_range<D>(lo, hi, X, k->V, F, k->half_dt, k->inv_mass, k->late);
   }
   return sums;
 }

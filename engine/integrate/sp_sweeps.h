@@ -25,18 +25,20 @@ namespace beverloo {
 struct DriftConstants {
   double dt = 0, half_dt = 0, half_dt2 = 0;
   const double* reference = nullptr;  ///< the list's build positions (D per particle); null: no test
+  double limit2 = 0;                  ///< the squared displacement that calls for a rebuild
   ExitWatch watch;
   double g = 0;                       ///< gravity
   std::array<double, 2> drag{}, mass{};  ///< per species
 };
 
-/// Particle i: x += v dt + a dt^2/2, v += a dt/2 (a = f/m); its squared displacement from the
-/// reference into moved2 (a running max); whether the exit bookkeeping has work for it into
-/// exiting; then f = -c v - m g e_up (drag and gravity at the new x and v).
+/// Particle i: x += v dt + a dt^2/2, v += a dt/2 (a = f/m); whether it moved beyond limit2 from
+/// its reference into moved (an or, not a running max: a max is a 4-cycle chain per particle);
+/// whether the exit bookkeeping has work for it into exiting; then f = -c v - m g e_up (drag and
+/// gravity at the new x and v).
 template <int D>
 [[gnu::always_inline]] inline void drift_and_start_force(int i, double* X, double* V, double* F, const double* inv_m,
                                                          const std::uint8_t* species, const std::uint8_t* exited,
-                                                         const DriftConstants& k, double& moved2, int& exiting) {
+                                                         const DriftConstants& k, int& moved, int& exiting) {
   const int sp = species[i];
 #if defined(__SSE2__)
   if constexpr (D == 2) {
@@ -51,7 +53,7 @@ template <int D>
       const __m128d u = _mm_sub_pd(x, _mm_loadu_pd(k.reference + 2 * i));
       const __m128d uu = _mm_mul_pd(u, u);
       const double d2 = _mm_cvtsd_f64(_mm_add_sd(uu, _mm_unpackhi_pd(uu, uu)));  // u0^2 + u1^2
-      moved2 = d2 > moved2 ? d2 : moved2;
+      moved |= d2 > k.limit2;
     }
     const double h = _mm_cvtsd_f64(_mm_unpackhi_pd(x, x));
     exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
@@ -72,7 +74,7 @@ template <int D>
       const double u = X[i * D + d] - k.reference[i * D + d];
       d2 = d == 0 ? u * u : d2 + u * u;
     }
-    moved2 = d2 > moved2 ? d2 : moved2;
+    moved |= d2 > k.limit2;
   }
   const double h = X[i * D + kUp<D>];
   exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
@@ -81,24 +83,54 @@ template <int D>
   F[i * D + kUp<D>] -= k.mass[sp] * k.g;
 }
 
-/// Particle i's kick v += (dt/2 / m) f; x + v of each component into checksum (finite?).
+/// drift_and_start_force() over particles lo .. hi - 1; returns whether one moved beyond
+/// k.limit2. The constants by value and the arrays restrict: through references (an OpenMP
+/// loop's shared variables) the compiler reloaded every constant on every particle.
 template <int D>
-[[gnu::always_inline]] inline void kick_one(int i, const double* X, double* V, const double* F, double half_dt,
-                                            const double* inv_m, double& checksum) {
+inline bool drift_range(int lo, int hi, double* __restrict X, double* __restrict V, double* __restrict F,
+                        const double* __restrict inv_m, const std::uint8_t* __restrict species,
+                        const std::uint8_t* __restrict exited, const DriftConstants k, int& exiting) {
+  int moved = 0, exits = 0;
+  for (int i = lo; i < hi; ++i) drift_and_start_force<D>(i, X, V, F, inv_m, species, exited, k, moved, exits);
+  exiting |= exits;
+  return moved != 0;
+}
+
+/// Particle i's kick v += (dt/2 / m) f; returns the sum of its x and v components, finite if
+/// and only if they all are (unless near overflow, 1e308).
+template <int D>
+[[gnu::always_inline]] inline double kick_one(int i, const double* X, double* V, const double* F, double half_dt,
+                                              const double* inv_m) {
   const double c = half_dt * inv_m[i];
 #if defined(__SSE2__)
   if constexpr (D == 2) {
     const __m128d v = _mm_add_pd(_mm_loadu_pd(V + 2 * i), _mm_mul_pd(_mm_set1_pd(c), _mm_loadu_pd(F + 2 * i)));
     _mm_storeu_pd(V + 2 * i, v);
     const __m128d xv = _mm_add_pd(_mm_loadu_pd(X + 2 * i), v);
-    checksum += _mm_cvtsd_f64(xv) + _mm_cvtsd_f64(_mm_unpackhi_pd(xv, xv));
-    return;
+    return _mm_cvtsd_f64(xv) + _mm_cvtsd_f64(_mm_unpackhi_pd(xv, xv));
   }
 #endif
+  double sum = 0;
   for (int d = 0; d < D; ++d) {
     V[i * D + d] += c * F[i * D + d];
-    checksum += X[i * D + d] + V[i * D + d];
+    sum += X[i * D + d] + V[i * D + d];
   }
+  return sum;
+}
+
+/// kick_one() over particles lo .. hi - 1 but those with skip[i] set (skip may be null);
+/// returns whether a position or velocity is not finite. An or per particle (t - t is 0 for a
+/// finite t, NaN else), not a running sum: a sum is a 4-cycle chain through every particle.
+template <int D>
+inline bool kick_range(int lo, int hi, const double* __restrict X, double* __restrict V, const double* __restrict F,
+                       double half_dt, const double* __restrict inv_m, const std::uint8_t* __restrict skip) {
+  int bad = 0;
+  for (int i = lo; i < hi; ++i) {
+    if (skip && skip[i]) continue;
+    const double t = kick_one<D>(i, X, V, F, half_dt, inv_m);
+    bad |= !(t - t == 0);
+  }
+  return bad != 0;
 }
 
 }  // namespace beverloo

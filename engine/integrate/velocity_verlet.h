@@ -66,10 +66,11 @@ bool kick(ParticleState<D>& s, double dt, int threads = 1) {
   double* __restrict V = s.v.data()->data();
   const double* __restrict F = s.f.data()->data();
   const double* __restrict inv_m = s.inv_mass.data();
-  double checksum = 0;  // only its finiteness is used: any summation order will do
-#pragma omp parallel for schedule(static) reduction(+ : checksum) num_threads(threads) if (threads > 1)
-  for (int i = 0; i < n; ++i) kick_one<D>(i, X, V, F, half_dt, inv_m, checksum);
-  return std::isfinite(checksum);
+  int bad = 0;
+#pragma omp parallel for schedule(static) reduction(| : bad) num_threads(threads) if (threads > 1)
+  for (int c = 0; c < threads; ++c)
+    bad |= kick_range<D>(int(long(n) * c / threads), int(long(n) * (c + 1) / threads), X, V, F, half_dt, inv_m, nullptr);
+  return bad == 0;
 }
 
 template <int D, class FF, class Hook>

@@ -73,9 +73,8 @@ StepReport SpModel<D>::step(ParticleState<D>& bodies, double dt, StepHook<D>& ho
   // (tests/physics/test_fused_step.cpp). The report holds no energies (compute_forces() has them).
   NeighborList<D>& list = ff_.list();
   bool exits_possible = true;
-  const double moved2 =
-      ff_.drift_and_start_forces(bodies, dt, list.reference_positions(), hook.exit_watch(bodies.sp), exits_possible);
-  if (list.due(moved2)) list.build_sorting(bodies, hopper_, sort_scratch_);
+  const bool moved = ff_.drift_and_start_forces(bodies, dt, hook.exit_watch(bodies.sp), exits_possible);
+  if (list.due_after(moved)) list.build_sorting(bodies, hopper_, sort_scratch_);
   hook.between_drift_and_force(bodies, list, exits_possible);
   // a relocation without room, a drained particle: the exits are done with their indices
   if (list.forced()) list.build_sorting(bodies, hopper_, sort_scratch_);

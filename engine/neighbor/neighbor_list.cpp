@@ -71,6 +71,13 @@ void NeighborList<D>::update_block_lists() {
   pair_i_.clear();
   pair_j_.clear();
   pair_start_.assign(nb + 1, 0);
+  wall_items_.clear();
+  wall_start_.assign(nb + 1, 0);
+  for (int b = 0; b < nb; ++b) {
+    for (int i = block_begin(b), hi = block_begin(b + 1); i < hi; ++i)
+      if (wall_mask_[i]) wall_items_.push_back(i);
+    wall_start_[b + 1] = static_cast<int>(wall_items_.size());
+  }
   for (int b = 0; b < nb; ++b) {
     for (int i = block_begin(b), hi = block_begin(b + 1); i < hi; ++i)
       for (const int* p = row_begin(i); p != row_end(i); ++p) {

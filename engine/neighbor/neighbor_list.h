@@ -35,7 +35,11 @@ class NeighborList {
   void build_sorting(ParticleState<D>& s, const Hopper<D>& hopper, ParticleState<D>& scratch);
   /// Whether the list must be rebuilt, given the largest squared displacement of any item since
   /// the last build (see reference_positions()).
-  bool due(double max_moved2) const { return force_ || max_moved2 > 0.25 * skin_ * skin_; }
+  bool due(double max_moved2) const { return force_ || max_moved2 > rebuild_distance2(); }
+  /// The squared displacement beyond which the list is due: (skin / 2)^2.
+  double rebuild_distance2() const { return 0.25 * skin_ * skin_; }
+  /// due(), given whether some item moved beyond rebuild_distance2().
+  bool due_after(bool moved_beyond) const { return force_ || moved_beyond; }
   /// Whether a rebuild has been forced (invalidate(), a relocation without room).
   bool forced() const { return force_; }
   /// Positions at the last build (a relocated item: at its relocation); empty before any build.
@@ -77,6 +81,10 @@ class NeighborList {
   /// loops walk this run rather than row by row: rows are short (2-3 entries in a 2D pile)
   /// and of varying length, and a loop per row paid a mispredicted branch at nearly every row's end.
   int pairs_begin(int b) const { return pair_start_[b]; }
+  /// The items of block b with a wall in reach (a non-zero wall_mask), increasing: the walls'
+  /// loop runs over these, a few per cent of all.
+  const int* wall_items_begin(int b) const { return wall_items_.data() + wall_start_[b]; }
+  const int* wall_items_end(int b) const { return wall_items_.data() + wall_start_[b + 1]; }
   const int* pair_i() const { return pair_i_.data(); }
   const int* pair_j() const { return pair_j_.data(); }
   const int* incoming_begin(int j) const { return in_items_.data() + in_start_[j]; }
@@ -189,7 +197,7 @@ class NeighborList {
   static constexpr int kMaxBlocks = 64;
   std::vector<int> in_start_, in_items_, receivers_, receivers_start_, late_items_;
   std::vector<std::uint8_t> late_;
-  std::vector<int> pair_i_, pair_j_, pair_start_;
+  std::vector<int> pair_i_, pair_j_, pair_start_, wall_items_, wall_start_;
   bool block_lists_stale_ = true;
   bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;

@@ -61,15 +61,12 @@ void NeighborList<D>::update_block_lists() {
   if (!block_lists_stale_) return;
   block_lists_stale_ = false;
   const int n = static_cast<int>(row_end_.size());
-  in_start_.assign(n + 2, 0);
-  in_items_.clear();
   const int nb = blocks();
+  in_items_.clear();
   receivers_.clear();
   receivers_start_.assign(nb + 1, 0);
   late_.assign(n, 0);
   late_items_.clear();
-  pair_i_.clear();
-  pair_j_.clear();
   pair_start_.assign(nb + 1, 0);
   wall_items_.clear();
   wall_start_.assign(nb + 1, 0);
@@ -78,42 +75,61 @@ void NeighborList<D>::update_block_lists() {
       if (wall_mask_[i]) wall_items_.push_back(i);
     wall_start_[b + 1] = static_cast<int>(wall_items_.size());
   }
+  // The pair runs: one flat pass over every slot of the rows (an unused slot holds -1), kept
+  // without a branch. A loop per row paid a mispredicted branch at nearly every row's end;
+  // relocate() changes rows often (a reinjection), so this runs about as often as a build.
+  const int slots = row_start_[n];
+  pair_i_.resize(slots);
+  pair_j_.resize(slots);
+  const int* __restrict nbr = nbr_.data();
+  const int* __restrict row = slot_row_.data();
+  int* __restrict PI = pair_i_.data();
+  int* __restrict PJ = pair_j_.data();
+  int q = 0;
   for (int b = 0; b < nb; ++b) {
-    for (int i = block_begin(b), hi = block_begin(b + 1); i < hi; ++i)
-      for (const int* p = row_begin(i); p != row_end(i); ++p) {
-        pair_i_.push_back(i);
-        pair_j_.push_back(*p);
-      }
-    pair_start_[b + 1] = static_cast<int>(pair_i_.size());
+    for (int k = row_start_[block_begin(b)], end = row_start_[block_begin(b + 1)]; k < end; ++k) {
+      PI[q] = row[k];
+      PJ[q] = nbr[k];
+      q += nbr[k] >= 0;
+    }
+    pair_start_[b + 1] = q;
   }
   if (nb == 1) return;
-  // counting pass, then fill: rows in increasing i, so each incoming list is increasing
+  // incoming lists: a counting pass, then a fill, over the pairs that cross a block boundary
+  // (pairs in increasing i, so each incoming list is increasing)
+  in_start_.assign(n + 2, 0);
   for (int b = 0; b < nb; ++b) {
     const int hi = block_begin(b + 1);
-    for (int i = block_begin(b); i < hi; ++i)
-      for (const int* p = row_begin(i); p != row_end(i); ++p)
-        if (*p >= hi) ++in_start_[*p + 2];
+    for (int k = pair_start_[b]; k < pair_start_[b + 1]; ++k)
+      if (PJ[k] >= hi) ++in_start_[PJ[k] + 2];
   }
   for (int j = 0; j < n; ++j) in_start_[j + 2] += in_start_[j + 1];
   in_items_.resize(in_start_[n + 1]);
   for (int b = 0; b < nb; ++b) {
     const int hi = block_begin(b + 1);
-    for (int i = block_begin(b); i < hi; ++i)
-      for (const int* p = row_begin(i); p != row_end(i); ++p)
-        if (*p >= hi) in_items_[in_start_[*p + 1]++] = i;
+    for (int k = pair_start_[b]; k < pair_start_[b + 1]; ++k)
+      if (PJ[k] >= hi) {
+        in_items_[in_start_[PJ[k] + 1]++] = PI[k];
+        // late kicks: the receiver (its velocity is read by the sender's row) and the sender
+        // (read by the receiver's incoming list)
+        late_[PI[k]] = 1;
+        late_[PJ[k]] = 1;
+      }
   }
   for (int b = 0; b < nb; ++b) {
     for (int j = block_begin(b), hi = block_begin(b + 1); j < hi; ++j)
       if (in_start_[j + 1] > in_start_[j]) receivers_.push_back(j);
     receivers_start_[b + 1] = static_cast<int>(receivers_.size());
   }
-  // late kicks: the receivers (their velocity is read by the senders' rows) and the senders
-  // (read by the receivers' incoming lists)
-  for (int j : receivers_) late_[j] = 1;
-  for (int j = 0; j < n; ++j)
-    for (const int* p = in_items_.data() + in_start_[j]; p != in_items_.data() + in_start_[j + 1]; ++p) late_[*p] = 1;
   for (int i = 0; i < n; ++i)
     if (late_[i]) late_items_.push_back(i);
+}
+
+template <int D>
+void NeighborList<D>::index_slots() {
+  const int n = static_cast<int>(row_end_.size());
+  slot_row_.resize(row_start_[n]);
+  for (int i = 0; i < n; ++i) std::fill(slot_row_.begin() + row_start_[i], slot_row_.begin() + row_start_[i + 1], i);
 }
 
 template <int D>
@@ -187,6 +203,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     end_row(i, s, hopper);
   }
   row_start_[n] = static_cast<int>(nbr_.size());
+  index_slots();
 }
 
 template <int D>
@@ -242,6 +259,7 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
     end_row(i, s, hopper);
   }
   row_start_[n] = static_cast<int>(nbr_.size());
+  index_slots();
 }
 
 template <int D>
@@ -266,6 +284,9 @@ void NeighborList<D>::restore(Snapshot snap, int n) {
   row_start_ = std::move(snap.row_start);
   row_end_ = std::move(snap.row_end);
   nbr_ = std::move(snap.nbr);
+  // unused slots hold -1 (a checkpoint of engine 0.3.0 could hold stale entries there)
+  for (int i = 0; i < n; ++i) std::fill(nbr_.begin() + row_end_[i], nbr_.begin() + row_start_[i + 1], -1);
+  index_slots();
   wall_mask_ = std::move(snap.wall_mask);
   builds_ = snap.builds;
   force_ = false;
@@ -278,6 +299,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
   block_lists_stale_ = true;
   const int n = s.size();
   // out: its own row, and its entries in the rows of lower-numbered particles
+  std::fill(nbr_.begin() + row_start_[i], nbr_.begin() + row_end_[i], -1);
   row_end_[i] = row_start_[i];
   for (int k = 0; k < i; ++k) {
     int* begin = nbr_.data() + row_start_[k];
@@ -285,6 +307,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
     int* at = std::lower_bound(begin, end, i);
     if (at != end && *at == i) {
       std::copy(at + 1, end, at);
+      *(end - 1) = -1;  // unused slots hold -1 (update_block_lists)
       --row_end_[k];
     }
   }

@@ -167,6 +167,8 @@ class NeighborList {
     return out;
   }
   void start_build(const ParticleState<D>& s);
+  /// After a build or a restore: slot_row_ (the row of every slot of nbr_).
+  void index_slots();
   /// Closes row i (its slack, its wall mask).
   void end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper);
 
@@ -190,7 +192,9 @@ class NeighborList {
   std::int64_t builds_ = 0;
   VecArray<D> x_ref_;
   /// Row i holds nbr_[row_start_[i], row_end_[i]); up to row_start_[i + 1] is room for relocate().
-  std::vector<int> row_start_, row_end_, nbr_;
+  /// Unused slots (the room) hold -1; slot_row_[k]: the row that slot k belongs to (fixed
+  /// between builds: relocate() changes row_end_ only).
+  std::vector<int> row_start_, row_end_, nbr_, slot_row_;
   static constexpr int kRowSlack = 4;
   static constexpr double kLayersPerBlock = 16;
   static constexpr int kMinItemsForBlocks = 1000;

@@ -14,12 +14,38 @@ bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, i
   for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
     if ((p - hopper_.nearest_point(w, p)).squaredNorm() < ri * ri) return false;
   const int n = s.size();
-  for (int k = 0; k < n; ++k) {
-    if (k == i) continue;
+  auto overlaps = [&](int k) {
+    if (k == i) return false;
     const double sig = 0.5 * (s.sigma(i) + s.sigma(k));
     // the touched particle sits at exactly sigma_ik: allow for the rounding of that placement
     const double tol = k == touching ? 1.0 - 1e-12 : 1.0;
-    if ((p - s.x[k]).squaredNorm() < sig * sig * tol) return false;
+    return (p - s.x[k]).squaredNorm() < sig * sig * tol;
+  };
+  // Every particle is tested (N per tried spot, most of them far away): a branchless pass over
+  // a chunk at a time, with the exact test above only in a chunk where something is within
+  // contact reach (its threshold is never below the exact test's, so nothing is missed).
+  double reach2[2];
+  for (int sp = 0; sp < 2; ++sp) {
+    const double sig = 0.5 * (s.sigma(i) + s.sp.sigma[sp]);
+    reach2[sp] = sig * sig;
+  }
+  const double* X = s.x.data()->data();
+  const std::uint8_t* species = s.species.data();
+  constexpr int kChunk = 16;
+  for (int k0 = 0; k0 < n; k0 += kChunk) {
+    const int k1 = std::min(n, k0 + kChunk);
+    int near = 0;
+    for (int k = k0; k < k1; ++k) {
+      double d2 = 0;
+      for (int d = 0; d < D; ++d) {
+        const double u = p[d] - X[k * D + d];
+        d2 += u * u;
+      }
+      near |= d2 < reach2[species[k]];
+    }
+    if (near)
+      for (int k = k0; k < k1; ++k)
+        if (overlaps(k)) return false;
   }
   return !extra_test_ || extra_test_(i, p);
 }

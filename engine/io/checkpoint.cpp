@@ -55,6 +55,11 @@ template <int D>
 void HopperRun<D>::load_checkpoint(const std::string& source) {
   H5Handle f = h5::open_file(source);
   if (h5::attr_string(f, "format") != "beverloo-checkpoint") throw IoError(source + " is not a beverloo checkpoint");
+  // another engine sums the forces in another order: continuing its state would give a result
+  // that neither engine gives straight through (prepare() sets the file aside and starts over)
+  const std::string engine = h5::attr_string(f, "engine_version");
+  if (engine != BEVERLOO_VERSION)
+    throw IoError(source + " was written by engine " + engine + ", this is " + BEVERLOO_VERSION);
   const std::string job = h5::attr_string(f, "job_json");
   if (job != c_.to_json().dump())
     throw ConfigError("job", "differs from the job of the checkpoint " + source + "; refusing to resume a different job");

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "engine/forces/kinetic_friction.h"
+#include "engine/io/h5.h"
 #include "engine/protocol/hopper_run.h"
 #include "support.h"
 
@@ -174,6 +175,22 @@ TEST(ForceBlocks, ResumedRunContinuesBitForBitWithAnotherThreadCount) {
   const ParticleState<2> straight = flow<2>(1, 4000);
   flow<2>(2, 0, dir, 2500);                           // checkpoint part-way, two threads
   expect_same_bits(straight, flow<2>(1, 4000, dir));  // resumed with one
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ForceBlocks, CheckpointOfAnotherEngineIsSetAsideAndTheRunStartsOver) {
+  // a checkpoint of another engine version continues neither engine's run: set aside, start over
+  const std::string dir = (std::filesystem::temp_directory_path() / "beverloo_other_engine").string();
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  flow<2>(1, 0, dir, 300);
+  {
+    H5Handle f = h5::open_file(dir + "/checkpoint.h5", true);
+    H5Adelete(f, "engine_version");
+    h5::attr(f, "engine_version", std::string("0.0.1"));
+  }
+  expect_same_bits(flow<2>(1, 600), flow<2>(1, 600, dir));  // started over: a fresh run's bits
+  EXPECT_TRUE(std::filesystem::exists(dir + "/checkpoint.h5.unusable"));
   std::filesystem::remove_all(dir);
 }
 

@@ -152,8 +152,9 @@ class ForceField {
     s.f[i][kUp<D>] -= s.sp.mass[sp] * gravity_.g();
   }
   /// The second sweep: the walls and the pairs added to the started forces (the list as it
-  /// is), then the kick v += f dt / (2m) of velocity_verlet.h, each item kicked as soon as its
-  /// force is complete (SpContact::block_and_kick), the list's late items after every block.
+  /// is), then the kick v += f dt / (2m) of velocity_verlet.h, each block's items once the
+  /// block's forces are complete (SpContact::block_and_kick), the list's late items after
+  /// every block.
   /// The forces and velocities are evaluate()'s and kick()'s bits, for every thread count.
   StepForces forces_and_kick(ParticleState<D>& s, double dt) {
     contact_.prepare(s);

@@ -46,7 +46,7 @@ class SpContact final : public ForceTerm<D> {
       nonfinite = nonfinite || o.nonfinite;
     }
   };
-  /// What the step's force pass needs to kick each item as soon as its force is complete
+  /// What the step's force pass needs to kick each block's items once their forces are complete
   /// (ForceField::forces_and_kick): v += (half_dt / m) f, the operations of kick().
   struct Kick {
     double half_dt = 0;
@@ -65,8 +65,8 @@ class SpContact final : public ForceTerm<D> {
     return law_.split() ? loop<Friction::Split, false>(s, f, b, nullptr) : loop<Friction::Full, false>(s, f, b, nullptr);
   }
   /// block() for a step: the same forces, no energy or power sums (only the largest overlap),
-  /// and each item that is not late kicked as soon as its force is complete (its row done), while
-  /// it is still in cache: one sweep over the items less per step.
+  /// and each of the block's items that is not late kicked once the block's forces are complete,
+  /// while the block is still in cache: no separate kick over all items.
   BlockSums block_and_kick(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick& k) const {
     if (!friction_on_ || !law_.active()) return loop<Friction::None, true>(s, f, b, &k);
     return law_.split() ? loop<Friction::Split, true>(s, f, b, &k) : loop<Friction::Full, true>(s, f, b, &k);

@@ -5,6 +5,7 @@
 # agree within errors. Usage: bench/quickstart_compare.sh OLD_BINARY NEW_BINARY [WORKDIR]
 set -eu
 OLD=$1 NEW=$2 WORK=${3:-$(mktemp -d)}
+mkdir -p "$WORK"
 here=$(cd "$(dirname "$0")/.." && pwd)
 for tag in old new; do
   bin=$OLD; [ $tag = new ] && bin=$NEW

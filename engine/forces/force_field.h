@@ -146,10 +146,8 @@ class ForceField {
   }
   /// Item i's force start (gravity and drag), after the protocol placed it anew.
   void start_force_of(ParticleState<D>& s, int i) {
-    const std::array<double, 2> drag = drag_coefficients_now();
     const int sp = s.species[i];
-    for (int d = 0; d < D; ++d) s.f[i][d] = -drag[sp] * s.v[i][d];
-    s.f[i][kUp<D>] -= s.sp.mass[sp] * gravity_.g();
+    start_force<D>(i, s.v.data()->data(), s.f.data()->data(), drag_coefficients_now()[sp], s.sp.mass[sp] * gravity_.g());
   }
   /// The second sweep: the walls and the pairs added to the started forces (the list as it
   /// is), then the kick v += f dt / (2m) of velocity_verlet.h, each block's items once the
@@ -173,10 +171,7 @@ class ForceField {
     const double* F = s.f.data()->data();
     double* V = s.v.data()->data();
     bool bad = contact.nonfinite;
-    for (int i : list_.late_kick_items()) {
-      const double t = kick_one<D>(i, X, V, F, k.half_dt, k.inv_mass);
-      bad = bad || !(t - t == 0);
-    }
+    for (int i : list_.late_kick_items()) bad = not_finite(kick_one<D>(i, X, V, F, k.half_dt, k.inv_mass)) || bad;
     return {contact.max_overlap, !bad};
   }
   /// Dissipation off: FIRE minimises the potential energy only.

@@ -129,6 +129,19 @@ class SpContact final : public ForceTerm<D> {
     pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, rubs(i, j), fij, energy, power, max_overlap);
     return true;
   }
+  /// Pair (i, j) of a block's pair run, one at a time: if the two touch, the force added to i
+  /// and subtracted from j if j < hi (else j's block adds it: incoming()). The scalar pairs()
+  /// and the SSE2 run's odd pair.
+  template <Friction kFriction>
+  [[gnu::always_inline]] inline void run_pair(const double* X, const double* V, double* F, const std::uint8_t* species,
+                                              int i, int j, int hi, double& energy, double& power,
+                                              double& max_overlap) const {
+    double fij[D];
+    if (!touching_pair<kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_overlap)) return;
+    for (int d = 0; d < D; ++d) F[i * D + d] += fij[d];
+    if (j < hi)
+      for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
+  }
   /// The friction force on i from j (dx = x_i - x_j, r = |dx|); kSplit: the split law.
   template <bool kSplit>
   Vec<D> friction_on(const ParticleState<D>& s, int i, int j, const Vec<D>& dx, double r) const {
@@ -221,14 +234,8 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, 
   // the sums in locals (registers): accumulated into the returned struct they lived in memory,
   // a store and reload on every pair's dependency chain
   double energy = 0, power = 0, max_ov = 0;
-  for (int q = list_.pairs_begin(b), q_end = list_.pairs_begin(b + 1); q < q_end; ++q) {
-    const int i = I[q], j = J[q];
-    double fij[D];
-    if (!touching_pair<kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_ov)) continue;
-    for (int d = 0; d < D; ++d) F[i * D + d] += fij[d];
-    if (j < hi)
-      for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
-  }
+  for (int q = list_.pairs_begin(b), q_end = list_.pairs_begin(b + 1); q < q_end; ++q)
+    run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
   BlockSums sums;
   if constexpr (!kKick) {  // else unused: the compiler drops their arithmetic
     sums.energy = energy;
@@ -293,15 +300,8 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>
   for (; q_end - q >= 2; q += 2)
     sse2::two_pairs<kLane, !kKick>(X, V, F, species, I[q], J[q], I[q + 1], J[q + 1], hi, t, law_.mu_n, law_.mu_t, lanes);
   double energy = 0, power = 0, max_ov = 0;
-  if (q != q_end) {  // the last, odd pair: the scalar code, after the others as in loop()
-    const int i = I[q], j = J[q];
-    double fij[D];
-    if (touching_pair<kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_ov)) {
-      for (int d = 0; d < D; ++d) F[i * D + d] += fij[d];
-      if (j < hi)
-        for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
-    }
-  }
+  // the last, odd pair: the scalar code, after the others as in pairs()
+  if (q != q_end) run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
   BlockSums sums;
   if constexpr (!kKick) {
     sums.energy = energy + sse2::sum_lanes(lanes.energy);

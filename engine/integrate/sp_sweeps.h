@@ -31,6 +31,17 @@ struct DriftConstants {
   std::array<double, 2> drag{}, mass{};  ///< per species
 };
 
+/// Particle i's force start: f = -c v (drag) - w e_up (its weight w = m g), as evaluate() starts it.
+template <int D>
+[[gnu::always_inline]] inline void start_force(int i, const double* V, double* F, double c, double weight) {
+  for (int d = 0; d < D; ++d) F[i * D + d] = -c * V[i * D + d];
+  F[i * D + kUp<D>] -= weight;
+}
+
+/// Whether t, a sum of positions and velocities (kick_one()), is not finite: t - t is 0 for a
+/// finite t, NaN else.
+inline bool not_finite(double t) { return !(t - t == 0); }
+
 /// Particle i: x += v dt + a dt^2/2, v += a dt/2 (a = f/m); whether it moved beyond limit2 from
 /// its reference into moved (an or, not a running max: a max is a 4-cycle chain per particle);
 /// whether the exit bookkeeping has work for it into exiting; then f = -c v - m g e_up (drag and
@@ -78,9 +89,7 @@ template <int D>
   }
   const double h = X[i * D + kUp<D>];
   exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
-  const double c = k.drag[sp];
-  for (int d = 0; d < D; ++d) F[i * D + d] = -c * V[i * D + d];
-  F[i * D + kUp<D>] -= k.mass[sp] * k.g;
+  start_force<D>(i, V, F, k.drag[sp], k.mass[sp] * k.g);
 }
 
 /// drift_and_start_force() over particles lo .. hi - 1; returns whether one moved beyond
@@ -119,8 +128,8 @@ template <int D>
 }
 
 /// kick_one() over particles lo .. hi - 1 but those with skip[i] set (skip may be null);
-/// returns whether a position or velocity is not finite. An or per particle (t - t is 0 for a
-/// finite t, NaN else), not a running sum: a sum is a 4-cycle chain through every particle.
+/// returns whether a position or velocity is not finite. An or per particle (not_finite()),
+/// not a running sum: a sum is a 4-cycle chain through every particle.
 template <int D>
 inline bool kick_range(int lo, int hi, const double* __restrict X, double* __restrict V, const double* __restrict F,
                        double half_dt, const double* __restrict inv_m, const std::uint8_t* __restrict skip) {
@@ -128,7 +137,7 @@ inline bool kick_range(int lo, int hi, const double* __restrict X, double* __res
   for (int i = lo; i < hi; ++i) {
     if (skip && skip[i]) continue;
     const double t = kick_one<D>(i, X, V, F, half_dt, inv_m);
-    bad |= !(t - t == 0);
+    bad |= not_finite(t);
   }
   return bad != 0;
 }

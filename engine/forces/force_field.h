@@ -62,8 +62,7 @@ class ForceField {
     double* __restrict F = s.f.data()->data();
     const std::uint8_t* __restrict species = s.species.data();
     const std::array<double, 2> mass = s.sp.mass;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
-    for (int b = 0; b < nb; ++b) {
+    auto block = [&](int b) {
       // sums in locals, stored once: accumulated in partial_[b] they made a store and reload
       // on every particle's dependency chain
       double U_gravity = 0, P_drag = 0, U_wall = 0;
@@ -88,6 +87,12 @@ class ForceField {
       out.U_gravity = U_gravity;
       out.P_drag = P_drag;
       out.U_wall = U_wall;
+    };
+    if (threads_ == 1) {  // no parallel region (see drift_and_start_forces)
+      for (int b = 0; b < nb; ++b) block(b);
+    } else {
+#pragma omp parallel for schedule(static) num_threads(threads_)
+      for (int b = 0; b < nb; ++b) block(b);
     }
     typename SpContact<D>::BlockSums contact;
     ForceReport r;
@@ -136,11 +141,15 @@ class ForceField {
     double* V = s.v.data()->data();
     double* F = s.f.data()->data();
     int moved = 0, exiting = 0;
-    // one chunk per thread (a chunk's constants are its own copies, see drift_range)
-#pragma omp parallel for schedule(static) reduction(| : moved, exiting) num_threads(threads_) if (threads_ > 1)
-    for (int c = 0; c < threads_; ++c)
-      moved |= drift_range<D>(int(long(n) * c / threads_), int(long(n) * (c + 1) / threads_), X, V, F,
-                              s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
+    if (threads_ == 1) {  // no parallel region: even a team of one cost ~2 % of a step in libgomp
+      moved = drift_range<D>(0, n, X, V, F, s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
+    } else {
+      // one chunk per thread (a chunk's constants are its own copies, see drift_range)
+#pragma omp parallel for schedule(static) reduction(| : moved, exiting) num_threads(threads_)
+      for (int c = 0; c < threads_; ++c)
+        moved |= drift_range<D>(int(long(n) * c / threads_), int(long(n) * (c + 1) / threads_), X, V, F,
+                                s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
+    }
     exits_possible = exiting != 0;
     return moved != 0 || !k.reference;
   }
@@ -159,11 +168,16 @@ class ForceField {
     const int nb = list_.blocks();
     partial_.resize(nb);
     const typename SpContact<D>::Kick k{0.5 * dt, s.v.data()->data(), s.inv_mass.data(), list_.late_kick()};
-#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
-    for (int b = 0; b < nb; ++b) {
+    auto block = [&](int b) {
       for (const int *i = list_.wall_items_begin(b), *end = list_.wall_items_end(b); i != end; ++i)
         walls_.add_to(s, *i, s.f[*i]);
       partial_[b].contact = contact_.block_and_kick(s, s.f, b, k);
+    };
+    if (threads_ == 1) {  // no parallel region (see drift_and_start_forces)
+      for (int b = 0; b < nb; ++b) block(b);
+    } else {
+#pragma omp parallel for schedule(static) num_threads(threads_)
+      for (int b = 0; b < nb; ++b) block(b);
     }
     typename SpContact<D>::BlockSums contact;
     for (const BlockPartial& p : partial_) contact.add(p.contact);

@@ -36,9 +36,8 @@ double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference, int t
   const double* __restrict inv_m = s.inv_mass.data();
   const bool measure = static_cast<int>(reference.size()) == n;
   const double* __restrict R = measure ? reference.data()->data() : nullptr;
-  double moved2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : moved2) num_threads(threads) if (threads > 1)
-  for (int i = 0; i < n; ++i) {
+  // one item: the update and its squared displacement from the reference (into moved2, a max)
+  auto one = [&](int i, double& moved2) {
     double d2 = 0;
     for (int d = 0; d < D; ++d) {
       const double a = F[i * D + d] * inv_m[i];
@@ -52,6 +51,13 @@ double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference, int t
       }
       moved2 = d2 > moved2 ? d2 : moved2;
     }
+  };
+  double moved2 = 0;
+  if (threads == 1) {  // no parallel region: even a team of one costs per call in libgomp
+    for (int i = 0; i < n; ++i) one(i, moved2);
+  } else {
+#pragma omp parallel for schedule(static) reduction(max : moved2) num_threads(threads)
+    for (int i = 0; i < n; ++i) one(i, moved2);
   }
   return moved2;
 }
@@ -66,8 +72,9 @@ bool kick(ParticleState<D>& s, double dt, int threads = 1) {
   double* __restrict V = s.v.data()->data();
   const double* __restrict F = s.f.data()->data();
   const double* __restrict inv_m = s.inv_mass.data();
+  if (threads == 1) return !kick_range<D>(0, n, X, V, F, half_dt, inv_m, nullptr);  // no parallel region
   int bad = 0;
-#pragma omp parallel for schedule(static) reduction(| : bad) num_threads(threads) if (threads > 1)
+#pragma omp parallel for schedule(static) reduction(| : bad) num_threads(threads)
   for (int c = 0; c < threads; ++c)
     bad |= kick_range<D>(int(long(n) * c / threads), int(long(n) * (c + 1) / threads), X, V, F, half_dt, inv_m, nullptr);
   return bad == 0;

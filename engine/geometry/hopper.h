@@ -57,11 +57,23 @@ class Hopper<2> {
   double lateral_centre() const { return 0.5 * (x_min_ + x_max_); }
   double half_width() const { return 0.5 * (x_max_ - x_min_); }
   double funnel_top() const { return std::max(h_left_, h_right_); }
+  /// True only if wall k is surely farther than `reach` from p: the distance to the wall's line
+  /// (a lower bound of the distance to the wall) beyond reach by more than a rounding margin.
+  /// A cheap test before nearest_point() for the many particles far from every wall; it never
+  /// decides a case that the exact test would decide otherwise.
+  bool beyond(int k, const Vec<2>& p, double reach) const {
+    const Segment& s = seg_[k];
+    const double ux = p[0] - s.a[0], uy = p[1] - s.a[1];
+    const double line_distance = std::fabs(ux * s.u[1] - uy * s.u[0]);
+    return line_distance > reach + kRounding * (1 + std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(s.a[0]) + std::fabs(s.a[1]));
+  }
   /// False for the side wall of a vertical funnel wall (which is that side wall itself).
   bool has_wall(int k) const { return seg_[k].length >= 0; }
   /// Where an absent wall's "nearest point" lies: far beyond any interaction, finite (its
   /// squared distance, ~1e300, stays below the largest double).
   static constexpr double kFar = 1e150;
+  /// beyond()'s margin per unit of coordinate size (rounding is ~1e-16 of it)
+  static constexpr double kRounding = 1e-12;
   double orifice_half_width() const { return w_ / 2; }
   /// Lateral distance of p from the orifice axis (|x|).
   static double lateral(const Vec<2>& p) { return std::fabs(p[0]); }
@@ -91,6 +103,13 @@ class Hopper<3> {
       return Vec<3>(rc * ex, rc * ey, 0.0);
     }
     return Vec<3>(R_ * ex, R_ * ey, p[2] > 0 ? p[2] : 0.0);  // mantle, z >= 0
+  }
+  /// As Hopper<2>::beyond(): the base's plane, the mantle's cylinder.
+  bool beyond(int k, const Vec<3>& p, double reach) const {
+    const double margin = 1e-12 * (1 + std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2]) + R_);
+    if (k == 0) return std::fabs(p[2]) > reach + margin;
+    const double inner = R_ - reach - margin;  // inside this radius the mantle is beyond reach
+    return inner > 0 && p[0] * p[0] + p[1] * p[1] < inner * inner * (1 - 1e-12);
   }
   /// True inside the cylinder or below the base plane (no walls there; see the 2D hopper).
   bool contains(const Vec<3>& p) const { return p[2] < 0 || std::hypot(p[0], p[1]) < R_; }

@@ -146,15 +146,20 @@ void NeighborList<D>::start_build(const ParticleState<D>& s) {
 }
 
 template <int D>
+std::uint8_t NeighborList<D>::walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper) {
+  std::uint8_t mask = 0;
+  for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
+    if (!hopper.beyond(w, x, reach) && (x - hopper.nearest_point(w, x)).squaredNorm() < reach * reach)
+      mask |= std::uint8_t(1u << w);
+  return mask;
+}
+
+template <int D>
 void NeighborList<D>::end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
   row_end_[i] = static_cast<int>(nbr_.size());
   nbr_.insert(nbr_.end(), kRowSlack, -1);  // room for relocate()
   // walls within reach of this particle until the next build
-  const double reach = 0.5 * s.sp.sigma[s.species[i]] + skin_;
-  std::uint8_t mask = 0;
-  for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
-    if ((s.x[i] - hopper.nearest_point(w, s.x[i])).squaredNorm() < reach * reach) mask |= std::uint8_t(1u << w);
-  wall_mask_[i] = mask;
+  wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * s.sp.sigma[s.species[i]] + skin_, hopper);
 }
 
 template <int D>
@@ -227,15 +232,33 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
   // the items of the neighbour cells after it, visited in increasing cell (so index) order.
   const auto& dims = dims_;
   const long plane = long(dims[0]) * dims[1];
+  const double* __restrict X = s.x.data()->data();
+  const std::uint8_t* __restrict species = s.species.data();
+  // Rows are written through a cursor q into nbr_, kept larger than any row can need (every
+  // candidate of the row plus its slack), and appended without a branch: a push_back per
+  // listed pair tested the capacity and reloaded the arrays through s (it might alias them).
+  nbr_.resize(std::max(nbr_.capacity(), std::size_t(n) * (kRowSlack + 8)));
+  int q = 0;
   int cell = 0;
   for (int i = 0; i < n; ++i) {
     while (cell_start_[cell + 1] <= i) ++cell;
-    row_start_[i] = static_cast<int>(nbr_.size());
-    const Vec<D> xi = s.x[i];
-    const double* cut_i = cut2.c[s.species[i]];
+    row_start_[i] = q;
+    double xi[D];
+    for (int d = 0; d < D; ++d) xi[d] = X[i * D + d];
+    const double* cut_i = cut2.c[species[i]];
     auto scan = [&](int from, int to) {
-      for (int j = from; j < to; ++j)
-        if ((xi - s.x[j]).squaredNorm() < cut_i[s.species[j]]) nbr_.push_back(j);
+      if (static_cast<int>(nbr_.size()) < q + (to - from) + kRowSlack)
+        nbr_.resize(std::max<std::size_t>(2 * nbr_.size(), q + (to - from) + kRowSlack + 64));
+      int* __restrict out = nbr_.data();
+      for (int j = from; j < to; ++j) {
+        double d2 = 0;
+        for (int d = 0; d < D; ++d) {
+          const double u = xi[d] - X[j * D + d];
+          d2 = d == 0 ? u * u : d2 + u * u;
+        }
+        out[q] = j;
+        q += d2 < cut_i[species[j]];
+      }
     };
     const int c0 = cell % dims[0];
     const int c1 = (cell / dims[0]) % dims[1];
@@ -256,9 +279,14 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
           scan_row(cell + plane + long(d1) * dims[0]);
         }
     }
-    end_row(i, s, hopper);
+    // close the row: its slack (scan() left room for it) and its wall mask
+    row_end_[i] = q;
+    std::fill(nbr_.begin() + q, nbr_.begin() + q + kRowSlack, -1);
+    q += kRowSlack;
+    wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * s.sp.sigma[species[i]] + skin_, hopper);
   }
-  row_start_[n] = static_cast<int>(nbr_.size());
+  nbr_.resize(q);
+  row_start_[n] = q;
   index_slots();
 }
 
@@ -331,11 +359,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
     *at = other;
     ++row_end_[row];
   }
-  const double reach = 0.5 * s.sp.sigma[si] + skin_;
-  std::uint8_t mask = 0;
-  for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
-    if ((x_ref_[i] - hopper.nearest_point(w, x_ref_[i])).squaredNorm() < reach * reach) mask |= std::uint8_t(1u << w);
-  wall_mask_[i] = mask;
+  wall_mask_[i] = walls_in_reach(x_ref_[i], 0.5 * s.sp.sigma[si] + skin_, hopper);
 }
 
 template class NeighborList<2>;

@@ -169,6 +169,8 @@ class NeighborList {
   void start_build(const ParticleState<D>& s);
   /// After a build or a restore: slot_row_ (the row of every slot of nbr_).
   void index_slots();
+  /// The walls within reach of a particle at x (a bit per wall).
+  static std::uint8_t walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper);
   /// Closes row i (its slack, its wall mask).
   void end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper);
 

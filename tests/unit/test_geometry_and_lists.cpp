@@ -1,6 +1,7 @@
 // Hopper walls (nearest points, corners, containment) and the Verlet list against brute force.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <set>
 
 #include "support.h"
@@ -91,6 +92,50 @@ TEST(Hopper2D, SegmentsCuttingAFunnelWall) {
   const Hopper<2> funnel(50, 6, units::deg_to_rad(45), units::deg_to_rad(45));
   EXPECT_EQ(funnel.funnel_wall_crossed(Vec<2>(4, 0.5), Vec<2>(5, 1.5)), -1);  // inside, along the wall
   EXPECT_EQ(funnel.funnel_wall_crossed(Vec<2>(4, 0.5), Vec<2>(4, 1.5)), 1);   // across the 45 degree wall
+}
+
+// beyond() is the wall masks' cheap test: it may say "maybe near" of a far wall, never "beyond"
+// of a wall within reach; and it must reject most far walls, or it saves nothing.
+template <int D>
+void check_beyond_never_hides_a_wall_in_reach(const Hopper<D>& h, double span, int seed, double min_rejected = 0.5) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coord(-span, span), up(-3, 2 * span), reach_of(0.1, 1.5);
+  int rejected = 0, points = 0;
+  for (int n = 0; n < 20000; ++n) {
+    Vec<D> p;
+    for (int d = 0; d < D; ++d) p[d] = coord(rng);
+    p[D - 1] = up(rng);
+    const double reach = reach_of(rng);
+    for (int k = 0; k < Hopper<D>::kNumWalls; ++k) {
+      ++points;
+      const double dist = (p - h.nearest_point(k, p)).norm();
+      if (!h.beyond(k, p, reach)) continue;
+      ++rejected;
+      EXPECT_GE(dist, reach) << "wall " << k << " at " << p.transpose() << " reach " << reach;
+    }
+    // points on a wall's reach boundary itself, where rounding decides
+    const int k = n % Hopper<D>::kNumWalls;
+    const Vec<D> on = h.nearest_point(k, p);
+    if ((p - on).norm() > 0 && (p - on).norm() < 1e3) {
+      const Vec<D> at = on + reach * (p - on).normalized();
+      if (h.beyond(k, at, reach)) {
+        EXPECT_GE((at - h.nearest_point(k, at)).squaredNorm(), reach * reach);
+      }
+    }
+  }
+  EXPECT_GT(rejected, min_rejected * points);
+}
+
+TEST(Hopper2D, BeyondNeverHidesAWallInReach) {
+  check_beyond_never_hides_a_wall_in_reach<2>(Hopper<2>(50, 6, units::pi / 2, units::pi / 2), 30, 1);
+  check_beyond_never_hides_a_wall_in_reach<2>(Hopper<2>(50, 6, units::deg_to_rad(60), units::deg_to_rad(30)), 30, 2);
+  check_beyond_never_hides_a_wall_in_reach<2>(Hopper<2>(50, 6, units::deg_to_rad(45), 0), 50, 3);
+  check_beyond_never_hides_a_wall_in_reach<2>(Hopper<2>(20, 4.5, units::deg_to_rad(10), units::deg_to_rad(80)), 15, 4);
+}
+
+TEST(Hopper3D, BeyondNeverHidesAWallInReach) {
+  check_beyond_never_hides_a_wall_in_reach<3>(Hopper<3>(25, 6), 14, 5);
+  check_beyond_never_hides_a_wall_in_reach<3>(Hopper<3>(3, 1), 2, 6, 0.2);  // narrow: most points near
 }
 
 TEST(Hopper3D, BaseAnnulusRimAndMantle) {

@@ -41,6 +41,8 @@ void NeighborList<D>::bin(const ParticleState<D>& s) {
     cell *= 1.5;
   }
   const double inv_cell = 1.0 / cell;
+  grid_lo_ = lo;
+  cell_width_ = cell;
   cell_of_.resize(n);
   cell_start_.assign(total + 1, 0);
   for (int i = 0; i < n; ++i) {
@@ -137,6 +139,9 @@ void NeighborList<D>::start_build(const ParticleState<D>& s) {
   block_lists_stale_ = true;
   force_ = false;
   ++builds_;
+  grid_ = true;
+  relocated_.clear();
+  relocated_.reserve(s.size());
   x_ref_.assign(s.x.begin(), s.x.end());
   const int n = s.size();
   row_start_.resize(n + 1);
@@ -167,6 +172,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
   const int n = s.size();
   start_build(s);
   bin(s);
+  grid_sorted_ = false;
   const Cutoffs cut2 = cutoffs(s.sp);
   cell_items_.resize(n);
   // fill in index order so that each cell lists its particles in increasing index
@@ -225,6 +231,7 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
   for (int i = 0; i < n; ++i) order_[cursor_[cell_of_[i]]++] = i;
   s.permute(order_, scratch);
   start_build(s);
+  grid_sorted_ = true;
 
   const Cutoffs cut2 = cutoffs(s.sp);
   // Cell cc now holds the items cell_start_[cc] .. cell_start_[cc + 1] - 1, and every item of a
@@ -295,6 +302,8 @@ void NeighborList<D>::restore(Snapshot snap, int n) {
   force_ = true;
   const auto bad = [](const std::string& what) { throw std::invalid_argument("neighbour list: " + what); };
   builds_ = snap.builds;
+  grid_ = false;  // the grid is not in a checkpoint: for_each_near() declines until the next build
+  relocated_.clear();
   if (snap.force) return;  // a rebuild was due anyway
   if (int(snap.x_ref.size()) != n || int(snap.row_start.size()) != n + 1 || int(snap.row_end.size()) != n ||
       int(snap.wall_mask.size()) != n)
@@ -325,7 +334,13 @@ template <int D>
 void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
   if (force_) return;  // a rebuild is due anyway
   block_lists_stale_ = true;
+  // before anything can fail: for_each_near() must see it (and declines once the list of
+  // relocations is as long as a scan of every item)
   const int n = s.size();
+  if (static_cast<int>(relocated_.size()) < n)
+    relocated_.push_back(i);
+  else
+    grid_ = false;
   // out: its own row, and its entries in the rows of lower-numbered particles
   std::fill(nbr_.begin() + row_start_[i], nbr_.begin() + row_end_[i], -1);
   row_end_[i] = row_start_[i];

@@ -138,6 +138,35 @@ class NeighborList {
   /// so force sums are unchanged; a row without room falls back to invalidate().
   void relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper);
 
+  /// Calls fn(k) for every item k that can lie within `reach` of point p, and returns true; or
+  /// returns false, having called nothing, if the list cannot tell (then test every item).
+  /// The candidates are the items binned at the last build in the cells around p, and the
+  /// items relocated since: while the list is valid (no item farther than skin/2 from its
+  /// reference position, as after update()), an item within reach of p was binned within
+  /// reach + skin/2 of p, so in a neighbouring cell if that is at most the cell width. An item
+  /// may come twice; fn must not move items. O(1) per call instead of O(N) (the reinjection's
+  /// free-spot test).
+  template <class Fn>
+  bool for_each_near(const Vec<D>& p, double reach, Fn&& fn) const {
+    if (force_ || !grid_ || reach + 0.5 * skin_ > cell_width_) return false;
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int d = 0; d < D; ++d) {
+      const double at = std::floor((p[d] - grid_lo_[d]) / cell_width_);
+      const int c = at < 0 ? 0 : (at > dims_[d] - 1 ? dims_[d] - 1 : static_cast<int>(at));
+      lo[d] = std::max(c - 1, 0);
+      hi[d] = std::min(c + 1, dims_[d] - 1);
+    }
+    for (int c2 = lo[2]; c2 <= hi[2]; ++c2)
+      for (int c1 = lo[1]; c1 <= hi[1]; ++c1) {
+        // a grid row's cells lo0 .. hi0 hold consecutive slots of the counting sort
+        const long first = (long(c2) * dims_[1] + c1) * dims_[0];
+        for (int k = cell_start_[first + lo[0]], end = cell_start_[first + hi[0] + 1]; k < end; ++k)
+          fn(grid_sorted_ ? k : cell_items_[k]);
+      }
+    for (int k : relocated_) fn(k);
+    return true;
+  }
+
   const int* row_begin(int i) const { return nbr_.data() + row_start_[i]; }
   const int* row_end(int i) const { return nbr_.data() + row_end_[i]; }
   std::uint8_t wall_mask(int i) const { return wall_mask_[i]; }
@@ -210,6 +239,13 @@ class NeighborList {
   // cell grid (counting sort), kept between builds so that builds allocate nothing
   std::vector<int> cell_of_, cell_start_, cell_items_, cursor_, order_;
   std::array<int, 3> dims_{1, 1, 1};
+  // the grid of the last build, for for_each_near(): its origin and cell width, whether its
+  // cells hold index ranges (build_sorting) or lists in cell_items_ (build), whether it exists
+  // (not after a restore), and the items relocated since it was made
+  Vec<D> grid_lo_ = Vec<D>::Zero();
+  double cell_width_ = 0;
+  bool grid_sorted_ = false, grid_ = false;
+  std::vector<int> relocated_;
 };
 
 }  // namespace beverloo

@@ -182,8 +182,8 @@ void HopperRun<D>::reinject_exited(NeighborList<D>& list) {
     ++rec_.reinjections;
     // the lane counter is the number of earlier reinjections: no extra checkpointed state
     const bool placed_as_ruled =
-        lanes ? reinjector_.reinject_in_lane(s_, i, rec_.reinjections - 1, body_drag_[s_.species[i]] / s_.mass(i))
-              : reinjector_.reinject(s_, i, rng_, in_pile_);
+        lanes ? reinjector_.reinject_in_lane(s_, i, rec_.reinjections - 1, body_drag_[s_.species[i]] / s_.mass(i), &list)
+              : reinjector_.reinject(s_, i, rng_, in_pile_, &list);
     if (!placed_as_ruled) ++rec_.reinjection_fallbacks;
     list.relocate(i, s_, hopper_);
     if (!lanes) in_pile_[i] = placed_as_ruled;  // resting on the pile; a fallback particle is in the air

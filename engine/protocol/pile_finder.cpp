@@ -23,8 +23,11 @@ void PileFinder<D>::find(const ParticleState<D>& s, const NeighborList<D>& list,
   for (int i = 0; i < n; ++i) {
     if (s.exited[i]) continue;
     const double r = 0.5 * s.sigma(i);
+    // a wall the particle touches is in its wall mask (the list is valid): the exact test only there
+    const std::uint8_t near = list.wall_mask(i);
     for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
-      if (Hopper<D>::is_floor(w) && (s.x[i] - hopper.nearest_point(w, s.x[i])).squaredNorm() < r * r)
+      if (Hopper<D>::is_floor(w) && (near >> w & 1u) &&
+          (s.x[i] - hopper.nearest_point(w, s.x[i])).squaredNorm() < r * r)
         floor_root_[root(i)] = 1;
   }
   in_pile.assign(n, 0);

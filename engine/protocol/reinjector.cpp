@@ -8,7 +8,8 @@
 namespace beverloo {
 
 template <int D>
-bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching) const {
+bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching,
+                            const NeighborList<D>* near) const {
   if (!hopper_.contains(p) || p[kUp<D>] < 0) return false;
   const double ri = 0.5 * s.sigma(i);
   for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
@@ -21,7 +22,15 @@ bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, i
     const double tol = k == touching ? 1.0 - 1e-12 : 1.0;
     return (p - s.x[k]).squaredNorm() < sig * sig * tol;
   };
-  // Every particle is tested (N per tried spot, most of them far away): a branchless pass over
+  // With a list: only the particles it finds near p (the largest contact distance of i is its
+  // reach), then the extra test.
+  if (near) {
+    bool free = true;
+    const double reach = 0.5 * (s.sigma(i) + std::max(s.sp.sigma[0], s.sp.sigma[1]));
+    if (near->for_each_near(p, reach, [&](int k) { free = free && !overlaps(k); }))
+      return free && (!extra_test_ || extra_test_(i, p));
+  }
+  // Else every particle is tested (N per tried spot, most of them far away): a branchless pass over
   // a chunk at a time, with the exact test above only in a chunk where something is within
   // contact reach (its threshold is never below the exact test's, so nothing is missed).
   double reach2[2];
@@ -51,7 +60,8 @@ bool Reinjector<D>::is_free(const ParticleState<D>& s, int i, const Vec<D>& p, i
 }
 
 template <int D>
-bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& pile) {
+bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& pile,
+                            const NeighborList<D>* near) {
   const int n = s.size();
   auto in_pile = [&](int k) { return k != i && pile[k]; };
   double top = -INFINITY;
@@ -74,7 +84,7 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
       dir << r * std::cos(phi), r * std::sin(phi), z;
     }
     const Vec<D> p = s.x[c] + 0.5 * (s.sigma(i) + s.sigma(c)) * dir;
-    if (!is_free(s, i, p, c)) continue;
+    if (!is_free(s, i, p, c, near)) continue;
     s.x[i] = p;
     s.v[i] = s.v[c];
     s.exited[i] = 0;
@@ -108,7 +118,7 @@ bool Reinjector<D>::reinject(ParticleState<D>& s, int i, Rng& rng, const std::ve
     }
     for (int lift = 0;; ++lift) {
       p[kUp<D>] = column_top + lift * ri;
-      if (is_free(s, i, p, below)) {
+      if (is_free(s, i, p, below, near)) {
         s.x[i] = p;
         s.v[i] = below >= 0 ? s.v[below] : Vec<D>::Zero();
         s.exited[i] = 0;
@@ -140,7 +150,8 @@ int Reinjector<D>::lanes(const ParticleState<D>& s) const {
 }
 
 template <int D>
-bool Reinjector<D>::reinject_in_lane(ParticleState<D>& s, int i, std::int64_t placement, double drag_rate) {
+bool Reinjector<D>::reinject_in_lane(ParticleState<D>& s, int i, std::int64_t placement, double drag_rate,
+                                    const NeighborList<D>* near) {
   const double small = s.sp.sigma[0];
   const int k_lane = static_cast<int>(placement % lanes(s));
   // 0, -1, +1, -2, +2, ... lane spacings from the axis (the code's round((k + 1e-4) / 2) * (-1)^k)
@@ -163,7 +174,7 @@ bool Reinjector<D>::reinject_in_lane(ParticleState<D>& s, int i, std::int64_t pl
   // not ours to overlap (a stiff contact would blow up), so lift in half-diameter steps
   const double ri = 0.5 * s.sigma(i);
   bool lifted = false;
-  while (!is_free(s, i, p, -1)) {
+  while (!is_free(s, i, p, -1, near)) {
     p[kUp<D>] += ri;
     lifted = true;
   }

@@ -14,6 +14,7 @@
 
 #include "../config.h"
 #include "../geometry/hopper.h"
+#include "../neighbor/neighbor_list.h"
 #include "../rng.h"
 #include "../state.h"
 
@@ -27,7 +28,10 @@ class Reinjector {
   }
   /// Places particle i; returns false if the fallback placement was used.
   /// in_pile: membership of the pile (PileFinder), kept up to date for placed particles.
-  bool reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& in_pile);
+  /// near: a list valid for s's positions, to find the particles near a tried spot (null: test
+  /// all N); the same placements either way.
+  bool reinject(ParticleState<D>& s, int i, Rng& rng, const std::vector<std::uint8_t>& in_pile,
+                const NeighborList<D>* near = nullptr);
   /// The authors' rule (reinjection.rule "lanes", 2D): particle i goes to lane
   /// `placement % lanes(s)` (lanes at 0, -2, +2, -4, +4, ... small diameters from the axis,
   /// taken in turn), one small diameter above the top of the highest particle within 1.5 small
@@ -36,11 +40,14 @@ class Reinjector {
   /// 1.5 small diameters when its drag rate is below 0.098/t0; its sideways velocity 0.1 of
   /// that, alternating in sign with the particle index. No random numbers are drawn.
   /// drag_rate: the particle's drag coefficient over its mass (1/t0).
-  bool reinject_in_lane(ParticleState<D>& s, int i, std::int64_t placement, double drag_rate);
+  bool reinject_in_lane(ParticleState<D>& s, int i, std::int64_t placement, double drag_rate,
+                        const NeighborList<D>* near = nullptr);
   /// Number of lanes: floor(W / 2 small diameters) - 2, at least 1.
   int lanes(const ParticleState<D>& s) const;
-  /// True if particle i at position p overlaps no other particle and no wall.
-  bool is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching) const;
+  /// True if particle i at position p overlaps no other particle and no wall. near: as in
+  /// reinject(); the answer does not depend on it.
+  bool is_free(const ParticleState<D>& s, int i, const Vec<D>& p, int touching,
+               const NeighborList<D>* near = nullptr) const;
   /// A further test of a spot that the body disks find free (DP: the polygons' own edges,
   /// which a stretched soft polygon pushes beyond its body disk). Empty: none.
   void set_extra_test(std::function<bool(int, const Vec<D>&)> test) { extra_test_ = std::move(test); }

@@ -1,6 +1,8 @@
 // The hopper protocol end to end on small systems: FIRE, reinjection, flow, clogging, failures.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "engine/protocol/hopper_run.h"
 #include "support.h"
 
@@ -138,6 +140,65 @@ TEST(Reinjection, FallbackTerminatesUnderATallColumnWithoutAPile) {
   EXPECT_FALSE(reinjector.reinject(s, 0, rng, no_pile));  // the fallback
   EXPECT_TRUE(reinjector.is_free(s, 0, s.x[0], -1));
   EXPECT_GT(top, 25) << "the test needs a column taller than the old lift cap";
+}
+
+// The free-spot test through the list's grid (for_each_near) gives the answer of the test of
+// every particle, in a settled pile whose particles then moved (less than skin/2) and some of
+// which were relocated, for both kinds of build and both dimensions; and the grid is really used.
+template <int D>
+void check_free_spots_through_the_list(bool sorting_build) {
+  SimConfig c = small_config(D, D == 2 ? 400 : 500, 4.0);
+  const Hopper<D> h = hopper_for<D>(c);
+  ParticleState<D> s = random_state<D>(c, h, 7);
+  ForceField<D> ff(c, h);
+  ff.set_gravity(0);
+  ff.set_dissipation(false);
+  ASSERT_TRUE(fire_minimize(s, ff, c.fire, 5e-4).converged);
+  NeighborList<D> list(c.skin);
+  ParticleState<D> scratch;
+  if (sorting_build)
+    list.build_sorting(s, h, scratch);
+  else
+    list.build(s, h);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1), unit(0, 1);
+  for (auto& x : s.x)  // every particle moves, less than skin/2
+    for (int d = 0; d < D; ++d) x[d] += 0.49 * c.skin / std::sqrt(double(D)) * u(rng);
+  double top = 0;
+  for (const auto& x : s.x) top = std::max(top, x[D - 1]);
+  for (int k = 0; k < 5; ++k) {  // relocations, as reinjections make them
+    const int i = 17 * k + 3;
+    s.x[i] = s.x[(i + 101) % c.N];
+    s.x[i][D - 1] = top + 1.5 * k;  // above the pile, touching earlier relocated ones
+    list.relocate(i, s, h);
+  }
+  ASSERT_FALSE(list.forced());
+  const double largest = std::max(s.sp.sigma[0], s.sp.sigma[1]);  // is_free's largest reach
+  ASSERT_TRUE(list.for_each_near(s.x[0], largest, [](int) {})) << "the grid declines";
+  Reinjector<D> reinjector(h, c.reinjection, c.N);
+  int free = 0, tried = 0, used_grid = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const int i = n % c.N;
+    Vec<D> p = s.x[(n * 7) % c.N];  // near particles (half of them somewhere in the column)
+    for (int d = 0; d < D; ++d) p[d] += (n % 2 ? 1.0 : 4.0) * u(rng);
+    if (n % 3 == 0) p[D - 1] = top - 1 + 7 * unit(rng);  // around the top and the relocated
+    const bool all = reinjector.is_free(s, i, p, -1);
+    const bool through_list = reinjector.is_free(s, i, p, -1, &list);
+    ASSERT_EQ(all, through_list) << "spot " << p.transpose() << " for particle " << i;
+    free += all;
+    ++tried;
+    used_grid += list.for_each_near(p, largest, [](int) {});
+  }
+  EXPECT_GT(free, tried / 20);
+  EXPECT_LT(free, tried - tried / 20);
+  EXPECT_EQ(used_grid, tried);
+}
+
+TEST(Reinjection, FreeSpotsThroughTheListAsThroughEveryParticle) {
+  check_free_spots_through_the_list<2>(true);
+  check_free_spots_through_the_list<2>(false);
+  check_free_spots_through_the_list<3>(true);
+  check_free_spots_through_the_list<3>(false);
 }
 
 TEST(Flow, FlowingCaseGivesPositiveQWithFiniteError) {

@@ -15,7 +15,7 @@ void SpContact<D>::prepare(const ParticleState<D>& s) {
       inv_sig_[a][b] = 1.0 / sig;
       eps_ab_[a][b] = scale_with_sigma_ ? eps_ * sig : eps_;
     }
-  list_.update_block_lists();
+  list_.update_block_lists(s.species.data());
 }
 
 template <int D>

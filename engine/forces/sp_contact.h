@@ -294,11 +294,15 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>
   const std::uint8_t* species = s.species.data();
   const int* I = list_.pair_i();
   const int* J = list_.pair_j();
+  const std::uint8_t* T = list_.pair_type();
+  const sse2::FrictionLanes mu(law_.mu_n, law_.mu_t);
   sse2::LaneSums lanes;
   int q = list_.pairs_begin(b);
   const int q_end = list_.pairs_begin(b + 1);
+  const auto u = [](int k) { return static_cast<std::size_t>(static_cast<unsigned>(k)); };  // k >= 0
   for (; q_end - q >= 2; q += 2)
-    sse2::two_pairs<kLane, !kKick>(X, V, F, species, I[q], J[q], I[q + 1], J[q + 1], hi, t, law_.mu_n, law_.mu_t, lanes);
+    sse2::two_pairs<kLane, !kKick>(X, V, F, u(I[q]), u(J[q]), u(I[q + 1]), u(J[q + 1]), T[q], T[q + 1], u(hi), t, mu,
+                                   lanes);
   double energy = 0, power = 0, max_ov = 0;
   // the last, odd pair: the scalar code, after the others as in pairs()
   if (q != q_end) run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);

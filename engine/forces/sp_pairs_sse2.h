@@ -12,6 +12,7 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 
+#include <cstddef>
 #include <cstdint>
 
 namespace beverloo::sse2 {
@@ -28,21 +29,31 @@ struct LaneSums {
 
 enum class Friction { None, Full, Split };
 
-/// Pairs (ia, ja) and (ib, jb) of a block's pair run: each pair's force added to its i and
+/// The friction coefficients as the lanes use them, made once per run (in the loop, the
+/// compiler reloaded and negated them on every pair: the force stores might alias them).
+struct FrictionLanes {
+  __m128d minus_mu_n, mu_t, minus_mu_t;
+  FrictionLanes(double mu_n, double mu_t_)
+      : minus_mu_n(_mm_set1_pd(-mu_n)), mu_t(_mm_set1_pd(mu_t_)), minus_mu_t(_mm_set1_pd(-mu_t_)) {}
+};
+
+/// Pairs (ia, ja) and (ib, jb) of a block's pair run, of species-pair types ta and tb
+/// (NeighborList::pair_type): each pair's force added to its i and
 /// subtracted from its j if j < hi (j's block is this one; else j's block adds it from its
 /// incoming list), pair a first, as the scalar loop does. kSums: also the energy and the
 /// friction power (diagnostics; a step needs only the forces and the largest overlap).
+/// Indices as std::size_t: from an int, each address took a sign extension and two leas.
 template <Friction kFriction, bool kSums>
-[[gnu::always_inline]] inline void two_pairs(const double* X, const double* V, double* F, const std::uint8_t* species,
-                                             int ia, int ja, int ib, int jb, int hi, const PairTables& t, double mu_n,
-                                             double mu_t, LaneSums& sums) {
+[[gnu::always_inline]] inline void two_pairs(const double* X, const double* V, double* F, std::size_t ia,
+                                             std::size_t ja, std::size_t ib, std::size_t jb, unsigned ta, unsigned tb,
+                                             std::size_t hi, const PairTables& t, const FrictionLanes& mu,
+                                             LaneSums& sums) {
   const __m128d xia = _mm_loadu_pd(X + 2 * ia), xib = _mm_loadu_pd(X + 2 * ib);
   const __m128d dxa = _mm_sub_pd(xia, _mm_loadu_pd(X + 2 * ja));
   const __m128d dxb = _mm_sub_pd(xib, _mm_loadu_pd(X + 2 * jb));
   const __m128d sqa = _mm_mul_pd(dxa, dxa), sqb = _mm_mul_pd(dxb, dxb);
   // r2 = dx0^2 + dx1^2 for each pair: lane 0 pair a, lane 1 pair b
   const __m128d r2 = _mm_add_pd(_mm_unpacklo_pd(sqa, sqb), _mm_unpackhi_pd(sqa, sqb));
-  const int ta = 2 * species[ia] + species[ja], tb = 2 * species[ib] + species[jb];
   const __m128d touching = _mm_cmplt_pd(r2, _mm_set_pd(t.sig2[tb], t.sig2[ta]));
   if (_mm_movemask_pd(touching) == 0) return;
   const __m128d r = _mm_sqrt_pd(r2);
@@ -70,13 +81,11 @@ template <Friction kFriction, bool kSums>
       const __m128d dot = _mm_add_pd(_mm_unpacklo_pd(pa, pb), _mm_unpackhi_pd(pa, pb));
       const __m128d dvna = _mm_mul_pd(_mm_unpacklo_pd(dot, dot), na);
       const __m128d dvnb = _mm_mul_pd(_mm_unpackhi_pd(dot, dot), nb);
-      const __m128d m_n = _mm_set1_pd(-mu_n), m_t = _mm_set1_pd(mu_t);
-      ffa = _mm_sub_pd(_mm_mul_pd(m_n, dvna), _mm_mul_pd(m_t, _mm_sub_pd(dva, dvna)));
-      ffb = _mm_sub_pd(_mm_mul_pd(m_n, dvnb), _mm_mul_pd(m_t, _mm_sub_pd(dvb, dvnb)));
+      ffa = _mm_sub_pd(_mm_mul_pd(mu.minus_mu_n, dvna), _mm_mul_pd(mu.mu_t, _mm_sub_pd(dva, dvna)));
+      ffb = _mm_sub_pd(_mm_mul_pd(mu.minus_mu_n, dvnb), _mm_mul_pd(mu.mu_t, _mm_sub_pd(dvb, dvnb)));
     } else {
-      const __m128d m_t = _mm_set1_pd(-mu_t);
-      ffa = _mm_mul_pd(m_t, dva);
-      ffb = _mm_mul_pd(m_t, dvb);
+      ffa = _mm_mul_pd(mu.minus_mu_t, dva);
+      ffb = _mm_mul_pd(mu.minus_mu_t, dvb);
     }
     ffa = _mm_and_pd(on_a, ffa);
     ffb = _mm_and_pd(on_b, ffb);

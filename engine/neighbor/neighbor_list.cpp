@@ -59,7 +59,7 @@ void NeighborList<D>::bin(const ParticleState<D>& s) {
 }
 
 template <int D>
-void NeighborList<D>::update_block_lists() {
+void NeighborList<D>::update_block_lists(const std::uint8_t* species) {
   if (!block_lists_stale_) return;
   block_lists_stale_ = false;
   const int n = static_cast<int>(row_end_.size());
@@ -83,16 +83,20 @@ void NeighborList<D>::update_block_lists() {
   const int slots = row_start_[n];
   pair_i_.resize(slots);
   pair_j_.resize(slots);
+  pair_type_.resize(slots);
   const int* __restrict nbr = nbr_.data();
   const int* __restrict row = slot_row_.data();
   int* __restrict PI = pair_i_.data();
   int* __restrict PJ = pair_j_.data();
+  std::uint8_t* __restrict PT = pair_type_.data();
   int q = 0;
   for (int b = 0; b < nb; ++b) {
     for (int k = row_start_[block_begin(b)], end = row_start_[block_begin(b + 1)]; k < end; ++k) {
+      const int j = nbr[k];
       PI[q] = row[k];
-      PJ[q] = nbr[k];
-      q += nbr[k] >= 0;
+      PJ[q] = j;
+      PT[q] = static_cast<std::uint8_t>(2 * species[row[k]] + species[j < 0 ? 0 : j]);  // an unused slot: overwritten
+      q += j >= 0;
     }
     pair_start_[b + 1] = q;
   }

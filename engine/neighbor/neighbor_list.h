@@ -74,8 +74,8 @@ class NeighborList {
     return static_cast<int>(n * b / blocks());
   }
   /// The blocks' pair runs, incoming lists and late kicks (brought up to date if rows changed
-  /// since they were made).
-  void update_block_lists();
+  /// since they were made); species: the items' species, for pair_type().
+  void update_block_lists(const std::uint8_t* species);
   /// Block b's pairs as one run: (pair_i()[k], pair_j()[k]) for k in pairs_begin(b) ..
   /// pairs_begin(b + 1), the rows of the block in order, each row's entries in order. The force
   /// loops walk this run rather than row by row: rows are short (2-3 entries in a 2D pile)
@@ -87,6 +87,9 @@ class NeighborList {
   const int* wall_items_end(int b) const { return wall_items_.data() + wall_start_[b + 1]; }
   const int* pair_i() const { return pair_i_.data(); }
   const int* pair_j() const { return pair_j_.data(); }
+  /// Per pair of the runs, 2 species(i) + species(j): the index of the species-pair tables,
+  /// without two loads from the species array per pair.
+  const std::uint8_t* pair_type() const { return pair_type_.data(); }
   const int* incoming_begin(int j) const { return in_items_.data() + in_start_[j]; }
   const int* incoming_end(int j) const { return in_items_.data() + in_start_[j + 1]; }
   /// The items of block b with a non-empty incoming list, increasing (a block's boundary: a
@@ -233,6 +236,7 @@ class NeighborList {
   std::vector<int> in_start_, in_items_, receivers_, receivers_start_, late_items_;
   std::vector<std::uint8_t> late_;
   std::vector<int> pair_i_, pair_j_, pair_start_, wall_items_, wall_start_;
+  std::vector<std::uint8_t> pair_type_;
   bool block_lists_stale_ = true;
   bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;

@@ -134,9 +134,7 @@ class ForceField {
     k.reference = static_cast<int>(reference.size()) == n ? reference.data()->data() : nullptr;
     k.limit2 = list_.rebuild_distance2();
     k.watch = watch;
-    k.g = gravity_.g();
-    k.drag = drag_coefficients_now();
-    k.mass = s.sp.mass;
+    k.set_force_start(gravity_.g(), drag_coefficients_now(), s.sp.mass);
     double* X = s.x.data()->data();
     double* V = s.v.data()->data();
     double* F = s.f.data()->data();

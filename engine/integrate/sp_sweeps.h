@@ -27,8 +27,13 @@ struct DriftConstants {
   const double* reference = nullptr;  ///< the list's build positions (D per particle); null: no test
   double limit2 = 0;                  ///< the squared displacement that calls for a rebuild
   ExitWatch watch;
-  double g = 0;                       ///< gravity
-  std::array<double, 2> drag{}, mass{};  ///< per species
+  /// Per species: the drag coefficient c and the weight m g (the force start -c v - m g e_up;
+  /// the weight as the product evaluate() forms, made once here and not per particle).
+  std::array<double, 2> drag{}, weight{};
+  void set_force_start(double g, const std::array<double, 2>& drag_coefficients, const std::array<double, 2>& mass) {
+    drag = drag_coefficients;
+    for (int sp = 0; sp < 2; ++sp) weight[sp] = mass[sp] * g;
+  }
 };
 
 /// Particle i's force start: f = -c v (drag) - w e_up (its weight w = m g), as evaluate() starts it.
@@ -46,7 +51,7 @@ inline bool not_finite(double t) { return !(t - t == 0); }
 /// its reference into moved (an or, not a running max: a max is a 4-cycle chain per particle);
 /// whether the exit bookkeeping has work for it into exiting; then f = -c v - m g e_up (drag and
 /// gravity at the new x and v).
-template <int D>
+template <int D, bool kMeasure = true>
 [[gnu::always_inline]] inline void drift_and_start_force(int i, double* X, double* V, double* F, const double* inv_m,
                                                          const std::uint8_t* species, const std::uint8_t* exited,
                                                          const DriftConstants& k, int& moved, int& exiting) {
@@ -60,7 +65,7 @@ template <int D>
     const __m128d v_new = _mm_add_pd(v, _mm_mul_pd(_mm_set1_pd(k.half_dt), a));
     _mm_storeu_pd(X + 2 * i, x);
     _mm_storeu_pd(V + 2 * i, v_new);
-    if (k.reference) {
+    if (kMeasure && k.reference) {
       const __m128d u = _mm_sub_pd(x, _mm_loadu_pd(k.reference + 2 * i));
       const __m128d uu = _mm_mul_pd(u, u);
       const double d2 = _mm_cvtsd_f64(_mm_add_sd(uu, _mm_unpackhi_pd(uu, uu)));  // u0^2 + u1^2
@@ -69,7 +74,7 @@ template <int D>
     const double h = _mm_cvtsd_f64(_mm_unpackhi_pd(x, x));
     exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
     // (-c v0, -c v1 - m g): the lane without gravity subtracts +0, which leaves -c v0 as it is
-    const __m128d f = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(-k.drag[sp]), v_new), _mm_set_pd(k.mass[sp] * k.g, 0.0));
+    const __m128d f = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(-k.drag[sp]), v_new), _mm_set_pd(k.weight[sp], 0.0));
     _mm_storeu_pd(F + 2 * i, f);
     return;
   }
@@ -79,7 +84,7 @@ template <int D>
     X[i * D + d] += k.dt * V[i * D + d] + k.half_dt2 * a;
     V[i * D + d] += k.half_dt * a;
   }
-  if (k.reference) {
+  if (kMeasure && k.reference) {
     double d2 = 0;
     for (int d = 0; d < D; ++d) {
       const double u = X[i * D + d] - k.reference[i * D + d];
@@ -89,7 +94,7 @@ template <int D>
   }
   const double h = X[i * D + kUp<D>];
   exiting |= exited[i] ? h < k.watch.exited_below[sp] : !(h >= 0);  // ExitCounter's tests
-  start_force<D>(i, V, F, k.drag[sp], k.mass[sp] * k.g);
+  start_force<D>(i, V, F, k.drag[sp], k.weight[sp]);
 }
 
 /// drift_and_start_force() over particles lo .. hi - 1; returns whether one moved beyond
@@ -100,7 +105,11 @@ inline bool drift_range(int lo, int hi, double* __restrict X, double* __restrict
                         const double* __restrict inv_m, const std::uint8_t* __restrict species,
                         const std::uint8_t* __restrict exited, const DriftConstants k, int& exiting) {
   int moved = 0, exits = 0;
-  for (int i = lo; i < hi; ++i) drift_and_start_force<D>(i, X, V, F, inv_m, species, exited, k, moved, exits);
+  // the reference test decided once, not per particle
+  if (k.reference)
+    for (int i = lo; i < hi; ++i) drift_and_start_force<D, true>(i, X, V, F, inv_m, species, exited, k, moved, exits);
+  else
+    for (int i = lo; i < hi; ++i) drift_and_start_force<D, false>(i, X, V, F, inv_m, species, exited, k, moved, exits);
   exiting |= exits;
   return moved != 0;
 }

@@ -26,7 +26,8 @@ class PileFinder {
   }
   /// in_pile[i] = 1 for non-exited particles connected to the floor. The list must be valid
   /// for the current positions (then the answer does not depend on when it was built).
-  void find(const ParticleState<D>& s, const NeighborList<D>& list, const Hopper<D>& hopper,
+  /// (The list's pair runs are brought up to date: update_block_lists.)
+  void find(const ParticleState<D>& s, NeighborList<D>& list, const Hopper<D>& hopper,
             std::vector<std::uint8_t>& in_pile);
 
  private:

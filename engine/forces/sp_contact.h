@@ -288,6 +288,7 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>
       t.half_eps[2 * a + c] = 0.5 * eps_ab_[a][c];
       t.eps[2 * a + c] = eps_ab_[a][c];
     }
+  t.make_lanes();
   const double* X = s.x.data()->data();
   const double* V = s.v.data()->data();
   double* F = f.data()->data();

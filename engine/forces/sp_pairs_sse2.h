@@ -17,9 +17,22 @@
 
 namespace beverloo::sse2 {
 
-/// Per species pair (index 2 si + sj): contact distance^2, its inverse, eps/2, eps.
+/// Per species-pair type t = 2 si + sj (NeighborList::pair_type): contact distance^2, its
+/// inverse, eps/2, eps; and the same per pair of types (4 ta + tb: lane 0 type ta, lane 1 type
+/// tb), so that two pairs' values come in one aligned load instead of two loads and a shuffle.
 struct PairTables {
   double sig2[4], inv_sig[4], half_eps[4], eps[4];
+  alignas(16) double lanes_sig2[16][2], lanes_inv_sig[16][2], lanes_half_eps[16][2], lanes_eps[16][2];
+  void make_lanes() {
+    for (int ta = 0; ta < 4; ++ta)
+      for (int tb = 0; tb < 4; ++tb) {
+        const int k = 4 * ta + tb;
+        lanes_sig2[k][0] = sig2[ta], lanes_sig2[k][1] = sig2[tb];
+        lanes_inv_sig[k][0] = inv_sig[ta], lanes_inv_sig[k][1] = inv_sig[tb];
+        lanes_half_eps[k][0] = half_eps[ta], lanes_half_eps[k][1] = half_eps[tb];
+        lanes_eps[k][0] = eps[ta], lanes_eps[k][1] = eps[tb];
+      }
+  }
 };
 
 /// Running sums of a block: two lanes each, added up at the end.
@@ -54,17 +67,19 @@ template <Friction kFriction, bool kSums>
   const __m128d sqa = _mm_mul_pd(dxa, dxa), sqb = _mm_mul_pd(dxb, dxb);
   // r2 = dx0^2 + dx1^2 for each pair: lane 0 pair a, lane 1 pair b
   const __m128d r2 = _mm_add_pd(_mm_unpacklo_pd(sqa, sqb), _mm_unpackhi_pd(sqa, sqb));
-  const __m128d touching = _mm_cmplt_pd(r2, _mm_set_pd(t.sig2[tb], t.sig2[ta]));
+  const unsigned k = 4 * ta + tb;
+  const __m128d touching = _mm_cmplt_pd(r2, _mm_load_pd(t.lanes_sig2[k]));
   if (_mm_movemask_pd(touching) == 0) return;
   const __m128d r = _mm_sqrt_pd(r2);
   const __m128d one = _mm_set1_pd(1.0);
-  const __m128d ov = _mm_and_pd(touching, _mm_sub_pd(one, _mm_mul_pd(r, _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta]))));
+  const __m128d inv_sig = _mm_load_pd(t.lanes_inv_sig[k]);
+  const __m128d ov = _mm_and_pd(touching, _mm_sub_pd(one, _mm_mul_pd(r, inv_sig)));
   // 0.5 * eps * ov * ov, as the scalar (0.5 * eps) * ov * ov
   if constexpr (kSums)
-    sums.energy = _mm_add_pd(sums.energy, _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.half_eps[tb], t.half_eps[ta]), ov), ov));
+    sums.energy = _mm_add_pd(sums.energy, _mm_mul_pd(_mm_mul_pd(_mm_load_pd(t.lanes_half_eps[k]), ov), ov));
   sums.max_ov = _mm_max_pd(sums.max_ov, ov);
   const __m128d scale = _mm_div_pd(
-      _mm_mul_pd(_mm_mul_pd(_mm_set_pd(t.eps[tb], t.eps[ta]), ov), _mm_set_pd(t.inv_sig[tb], t.inv_sig[ta])), r);
+      _mm_mul_pd(_mm_mul_pd(_mm_load_pd(t.lanes_eps[k]), ov), inv_sig), r);
   __m128d fa = _mm_mul_pd(_mm_unpacklo_pd(scale, scale), dxa);
   __m128d fb = _mm_mul_pd(_mm_unpackhi_pd(scale, scale), dxb);
   if constexpr (kFriction != Friction::None) {

@@ -69,7 +69,6 @@ void NeighborList<D>::update_block_lists(const std::uint8_t* species) {
   receivers_start_.assign(nb + 1, 0);
   late_.assign(n, 0);
   late_items_.clear();
-  pair_start_.assign(nb + 1, 0);
   wall_items_.clear();
   wall_start_.assign(nb + 1, 0);
   for (int b = 0; b < nb; ++b) {
@@ -77,29 +76,9 @@ void NeighborList<D>::update_block_lists(const std::uint8_t* species) {
       if (wall_mask_[i]) wall_items_.push_back(i);
     wall_start_[b + 1] = static_cast<int>(wall_items_.size());
   }
-  // The pair runs: one flat pass over every slot of the rows (an unused slot holds -1), kept
-  // without a branch. A loop per row paid a mispredicted branch at nearly every row's end;
-  // relocate() changes rows often (a reinjection), so this runs about as often as a build.
-  const int slots = row_start_[n];
-  pair_i_.resize(slots);
-  pair_j_.resize(slots);
-  pair_type_.resize(slots);
-  const int* __restrict nbr = nbr_.data();
-  const int* __restrict row = slot_row_.data();
-  int* __restrict PI = pair_i_.data();
-  int* __restrict PJ = pair_j_.data();
-  std::uint8_t* __restrict PT = pair_type_.data();
-  int q = 0;
-  for (int b = 0; b < nb; ++b) {
-    for (int k = row_start_[block_begin(b)], end = row_start_[block_begin(b + 1)]; k < end; ++k) {
-      const int j = nbr[k];
-      PI[q] = row[k];
-      PJ[q] = j;
-      PT[q] = static_cast<std::uint8_t>(2 * species[row[k]] + species[j < 0 ? 0 : j]);  // an unused slot: overwritten
-      q += j >= 0;
-    }
-    pair_start_[b + 1] = q;
-  }
+  if (!run_fresh_) make_pair_runs(species);
+  const int* __restrict PI = pair_i_.data();
+  const int* __restrict PJ = pair_j_.data();
   if (nb == 1) return;
   // incoming lists: a counting pass, then a fill, over the pairs that cross a block boundary
   // (pairs in increasing i, so each incoming list is increasing)
@@ -132,7 +111,41 @@ void NeighborList<D>::update_block_lists(const std::uint8_t* species) {
 }
 
 template <int D>
+void NeighborList<D>::make_pair_runs(const std::uint8_t* species) {
+  // One flat pass over every slot of the rows (an unused slot holds -1), kept without a
+  // branch: a loop per row paid a mispredicted branch at nearly every row's end. After a build
+  // by build_sorting() the runs are written by the build itself; this pass is for the rows
+  // that relocate() changed (a reinjection) and for the other builds.
+  index_slots();
+  const int n = static_cast<int>(row_end_.size());
+  const int nb = blocks();
+  const int slots = row_start_[n];
+  pair_i_.resize(slots);
+  pair_j_.resize(slots);
+  pair_type_.resize(slots);
+  pair_start_.assign(nb + 1, 0);
+  const int* __restrict nbr = nbr_.data();
+  const int* __restrict row = slot_row_.data();
+  int* __restrict PI = pair_i_.data();
+  int* __restrict PJ = pair_j_.data();
+  std::uint8_t* __restrict PT = pair_type_.data();
+  int q = 0;
+  for (int b = 0; b < nb; ++b) {
+    for (int k = row_start_[block_begin(b)], end = row_start_[block_begin(b + 1)]; k < end; ++k) {
+      const int j = nbr[k];
+      PI[q] = row[k];
+      PJ[q] = j;
+      PT[q] = static_cast<std::uint8_t>(2 * species[row[k]] + species[j < 0 ? 0 : j]);  // an unused slot: overwritten
+      q += j >= 0;
+    }
+    pair_start_[b + 1] = q;
+  }
+}
+
+template <int D>
 void NeighborList<D>::index_slots() {
+  if (slots_indexed_) return;
+  slots_indexed_ = true;
   const int n = static_cast<int>(row_end_.size());
   slot_row_.resize(row_start_[n]);
   for (int i = 0; i < n; ++i) std::fill(slot_row_.begin() + row_start_[i], slot_row_.begin() + row_start_[i + 1], i);
@@ -143,6 +156,7 @@ void NeighborList<D>::start_build(const ParticleState<D>& s) {
   block_lists_stale_ = true;
   force_ = false;
   ++builds_;
+  run_fresh_ = false;
   grid_ = true;
   relocated_.clear();
   relocated_.reserve(s.size());
@@ -218,7 +232,7 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     end_row(i, s, hopper);
   }
   row_start_[n] = static_cast<int>(nbr_.size());
-  index_slots();
+  slots_indexed_ = false;
 }
 
 template <int D>
@@ -248,27 +262,51 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
   // Rows are written through a cursor q into nbr_, kept larger than any row can need (every
   // candidate of the row plus its slack), and appended without a branch: a push_back per
   // listed pair tested the capacity and reloaded the arrays through s (it might alias them).
+  // The blocks' pair runs (see make_pair_runs) are written alongside, through a cursor p:
+  // the rows in order, without their slack.
   nbr_.resize(std::max(nbr_.capacity(), std::size_t(n) * (kRowSlack + 8)));
-  int q = 0;
+  const auto room_for_pairs = [&](std::size_t size) {
+    pair_i_.resize(size);
+    pair_j_.resize(size);
+    pair_type_.resize(size);
+  };
+  room_for_pairs(std::max(pair_i_.capacity(), std::size_t(n) * 8));
+  const int nb = blocks();
+  pair_start_.assign(nb + 1, 0);
+  int next_block = 1, next_block_first = block_begin(1);
+  int q = 0, p = 0;
   int cell = 0;
   for (int i = 0; i < n; ++i) {
     while (cell_start_[cell + 1] <= i) ++cell;
+    for (; next_block < nb && i == next_block_first; next_block_first = block_begin(++next_block))
+      pair_start_[next_block] = p;
     row_start_[i] = q;
     double xi[D];
     for (int d = 0; d < D; ++d) xi[d] = X[i * D + d];
     const double* cut_i = cut2.c[species[i]];
+    const int type_i = 2 * species[i];
     auto scan = [&](int from, int to) {
       if (static_cast<int>(nbr_.size()) < q + (to - from) + kRowSlack)
         nbr_.resize(std::max<std::size_t>(2 * nbr_.size(), q + (to - from) + kRowSlack + 64));
+      if (static_cast<int>(pair_i_.size()) < p + (to - from))
+        room_for_pairs(std::max<std::size_t>(2 * pair_i_.size(), p + (to - from) + 64));
       int* __restrict out = nbr_.data();
+      int* __restrict PI = pair_i_.data();
+      int* __restrict PJ = pair_j_.data();
+      std::uint8_t* __restrict PT = pair_type_.data();
       for (int j = from; j < to; ++j) {
         double d2 = 0;
         for (int d = 0; d < D; ++d) {
           const double u = xi[d] - X[j * D + d];
           d2 = d == 0 ? u * u : d2 + u * u;
         }
+        const bool listed = d2 < cut_i[species[j]];
         out[q] = j;
-        q += d2 < cut_i[species[j]];
+        PI[p] = i;
+        PJ[p] = j;
+        PT[p] = static_cast<std::uint8_t>(type_i + species[j]);
+        q += listed;
+        p += listed;
       }
     };
     const int c0 = cell % dims[0];
@@ -298,7 +336,9 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
   }
   nbr_.resize(q);
   row_start_[n] = q;
-  index_slots();
+  slots_indexed_ = false;
+  for (; next_block <= nb; ++next_block) pair_start_[next_block] = p;
+  run_fresh_ = true;
 }
 
 template <int D>
@@ -327,7 +367,8 @@ void NeighborList<D>::restore(Snapshot snap, int n) {
   nbr_ = std::move(snap.nbr);
   // unused slots hold -1 (a checkpoint of engine 0.3.0 could hold stale entries there)
   for (int i = 0; i < n; ++i) std::fill(nbr_.begin() + row_end_[i], nbr_.begin() + row_start_[i + 1], -1);
-  index_slots();
+  slots_indexed_ = false;
+  run_fresh_ = false;
   wall_mask_ = std::move(snap.wall_mask);
   builds_ = snap.builds;
   force_ = false;
@@ -338,6 +379,7 @@ template <int D>
 void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
   if (force_) return;  // a rebuild is due anyway
   block_lists_stale_ = true;
+  run_fresh_ = false;
   // before anything can fail: for_each_near() must see it (and declines once the list of
   // relocations is as long as a scan of every item)
   const int n = s.size();

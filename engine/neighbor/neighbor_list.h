@@ -68,6 +68,7 @@ class NeighborList {
   void use_blocks(bool on) {
     blocks_on_ = on;
     block_lists_stale_ = true;
+    run_fresh_ = false;  // its block boundaries change
   }
   int block_begin(int b) const {
     const long n = static_cast<long>(row_end_.size());
@@ -199,7 +200,9 @@ class NeighborList {
     return out;
   }
   void start_build(const ParticleState<D>& s);
-  /// After a build or a restore: slot_row_ (the row of every slot of nbr_).
+  /// The pair runs (pair_i_, pair_j_, pair_type_, pair_start_) from the rows.
+  void make_pair_runs(const std::uint8_t* species);
+  /// slot_row_ (the row of every slot of nbr_), if not made since the last build or restore.
   void index_slots();
   /// The walls within reach of a particle at x (a bit per wall).
   static std::uint8_t walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper);
@@ -238,6 +241,9 @@ class NeighborList {
   std::vector<int> pair_i_, pair_j_, pair_start_, wall_items_, wall_start_;
   std::vector<std::uint8_t> pair_type_;
   bool block_lists_stale_ = true;
+  /// The pair runs were written by build_sorting() itself (update_block_lists() then skips
+  /// its pass over the slots); slot_row_ is made only for that pass, when it is needed.
+  bool run_fresh_ = false, slots_indexed_ = false;
   bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing

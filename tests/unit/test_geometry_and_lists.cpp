@@ -1,6 +1,7 @@
 // Hopper walls (nearest points, corners, containment) and the Verlet list against brute force.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <set>
 
@@ -199,6 +200,39 @@ std::set<std::pair<int, int>> listed_pairs(const NeighborList<D>& list, int n) {
     }
   }
   return out;
+}
+
+// The pair runs that build_sorting() writes while it builds are the ones the pass over the
+// slots makes from the rows (after a restore, which has no runs of its own), block by block.
+template <int D>
+void check_pair_runs_of_the_build(int n, std::uint64_t seed) {
+  SimConfig c = small_config(D, n, 3.0);
+  const Hopper<D> h = hopper_for<D>(c);
+  ParticleState<D> s = random_state<D>(c, h, seed), scratch;
+  NeighborList<D> list(c.skin), again(c.skin);
+  list.use_blocks(true);
+  again.use_blocks(true);
+  list.build_sorting(s, h, scratch);
+  list.update_block_lists(s.species.data());
+  again.restore(list.snapshot(), s.size());
+  again.update_block_lists(s.species.data());
+  ASSERT_GE(list.blocks(), 2);
+  ASSERT_EQ(list.blocks(), again.blocks());
+  for (int b = 0; b <= list.blocks(); ++b) ASSERT_EQ(list.pairs_begin(b), again.pairs_begin(b)) << "block " << b;
+  const int pairs = list.pairs_begin(list.blocks());
+  EXPECT_GT(pairs, n);
+  for (int k = 0; k < pairs; ++k) {
+    ASSERT_EQ(list.pair_i()[k], again.pair_i()[k]) << k;
+    ASSERT_EQ(list.pair_j()[k], again.pair_j()[k]) << k;
+    ASSERT_EQ(list.pair_type()[k], again.pair_type()[k]) << k;
+  }
+  for (int b = 0; b < list.blocks(); ++b)
+    EXPECT_TRUE(std::equal(list.receivers_begin(b), list.receivers_end(b), again.receivers_begin(b), again.receivers_end(b)));
+}
+
+TEST(NeighborList, PairRunsOfTheSortingBuildEqualThoseFromTheRows) {
+  check_pair_runs_of_the_build<2>(2400, 3);
+  check_pair_runs_of_the_build<3>(3000, 4);
 }
 
 TEST(NeighborList, RelocateEqualsARebuild) {

@@ -156,7 +156,7 @@ class NeighborList {
     int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     for (int d = 0; d < D; ++d) {
       const double at = std::floor((p[d] - grid_lo_[d]) / cell_width_);
-      const int c = at < 0 ? 0 : (at > dims_[d] - 1 ? dims_[d] - 1 : static_cast<int>(at));
+      const int c = !(at > 0) ? 0 : (at > dims_[d] - 1 ? dims_[d] - 1 : static_cast<int>(at));  // NaN: 0
       lo[d] = std::max(c - 1, 0);
       hi[d] = std::min(c + 1, dims_[d] - 1);
     }

@@ -88,12 +88,7 @@ class ForceField {
       out.P_drag = P_drag;
       out.U_wall = U_wall;
     };
-    if (threads_ == 1) {  // no parallel region (see drift_and_start_forces)
-      for (int b = 0; b < nb; ++b) block(b);
-    } else {
-#pragma omp parallel for schedule(static) num_threads(threads_)
-      for (int b = 0; b < nb; ++b) block(b);
-    }
+    for_each_block(nb, block);
     typename SpContact<D>::BlockSums contact;
     ForceReport r;
     for (const BlockPartial& p : partial_) {  // in block order, whatever the threads
@@ -171,12 +166,7 @@ class ForceField {
         walls_.add_to(s, *i, s.f[*i]);
       partial_[b].contact = contact_.block_and_kick(s, s.f, b, k);
     };
-    if (threads_ == 1) {  // no parallel region (see drift_and_start_forces)
-      for (int b = 0; b < nb; ++b) block(b);
-    } else {
-#pragma omp parallel for schedule(static) num_threads(threads_)
-      for (int b = 0; b < nb; ++b) block(b);
-    }
+    for_each_block(nb, block);
     typename SpContact<D>::BlockSums contact;
     for (const BlockPartial& p : partial_) contact.add(p.contact);
     const double* X = s.x.data()->data();
@@ -202,6 +192,17 @@ class ForceField {
   std::vector<ForceTerm<D>*> terms() { return {&contact_, &walls_, &gravity_, &drag_}; }
 
  private:
+  /// block(b) for every block b < nb: on threads_ threads, or with one thread in a plain loop
+  /// (no parallel region: even a team of one went through libgomp, see drift_and_start_forces).
+  template <class Block>
+  void for_each_block(int nb, Block& block) const {
+    if (threads_ == 1) {
+      for (int b = 0; b < nb; ++b) block(b);
+      return;
+    }
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (int b = 0; b < nb; ++b) block(b);
+  }
   /// The drag coefficient of each species, 0 while dissipation is off.
   std::array<double, 2> drag_coefficients_now() const {
     return drag_.active() ? drag_.coefficients() : std::array<double, 2>{0, 0};

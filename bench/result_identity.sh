@@ -1,6 +1,6 @@
 #!/bin/bash
 # Are two beverloo binaries' results identical? Runs one short job per model (SP 2D, SP 2D in
-# two force blocks (N = 1600, friction), SP 3D,
+# two force blocks (N = 1600, friction; and drag only), SP 3D,
 # smooth DP, rough DP, and the authors' options with the lanes rule) with each binary and
 # compares result.h5 (h5dump at 17 digits: every dataset and attribute; the timing attributes
 # wall_seconds and particle_steps_per_second aside, and the engine_version label) and summary.json
@@ -13,6 +13,7 @@ mkdir -p "$WORK"
 declare -A JOBS=(
   [sp2d]='{"dimension": 2, "N": 300, "W": 16, "w": 5, "zeta": 0.5, "mu": 0, "seed": 3, "run": {"t_max": 30, "min_window": 10, "min_transient": 5}}'
   [sp2d_blocks]='{"dimension": 2, "N": 1600, "W": 40, "w": 6, "zeta": 0, "mu": 31.6227766, "seed": 3, "run": {"t_max": 12, "min_window": 4, "min_transient": 3, "rate_bin": 0.5}}'
+  [sp2d_blocks_drag]='{"dimension": 2, "N": 1600, "W": 40, "w": 6, "zeta": 0.316227766, "mu": 0, "seed": 3, "run": {"t_max": 10, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
   [sp3d]='{"dimension": 3, "N": 600, "W": 9, "w": 4, "zeta": 0, "mu": 10, "seed": 3, "run": {"t_max": 15, "min_window": 5, "min_transient": 3, "rate_bin": 0.5}}'
   [dp_smooth]='{"model": "dp_smooth", "N": 40, "W": 10, "w": 4, "zeta": 0.5, "mu": 0, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
   [dp_rough]='{"model": "dp_rough", "N": 40, "W": 10, "w": 4, "zeta": 0, "mu": 2, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'

@@ -17,6 +17,7 @@
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
 #include "kinetic_friction.h"
+#include "sp_pairs_avx2.h"
 #include "sp_pairs_sse2.h"
 
 namespace beverloo {
@@ -78,8 +79,16 @@ class SpContact final : public ForceTerm<D> {
   /// Friction force on each particle alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<D>& s, VecArray<D>& out) const;
   void set_friction_enabled(bool on) { friction_on_ = on; }
-  /// The 2D rows two pairs at a time (default) or one by one: the same forces, for the tests.
-  void set_simd(bool on) { simd_ = on; }
+  /// The 2D pair runs four pairs at a time (AVX2, where the processor has it: the default),
+  /// two (SSE2) or one by one (1): the same forces, for the tests. Returns the width set (4
+  /// without AVX2 sets 2).
+  int set_simd_width(int width) {
+    simd_ = width >= 2;
+    simd_width_ = width >= 4 && avx2_available() ? 4 : (width >= 2 ? 2 : 1);
+    return simd_width_;
+  }
+  void set_simd(bool on) { set_simd_width(on ? 4 : 1); }
+  int simd_width() const { return simd_width_; }
   /// Pairs of one group (vertices of one rough polygon in self-contact) repel but do not rub:
   /// kinetic friction acts between particles (physics.md 4). nullptr: every pair rubs.
   void set_friction_groups(const std::vector<int>* group) { friction_group_ = group; }
@@ -155,6 +164,14 @@ class SpContact final : public ForceTerm<D> {
   bool scale_with_sigma_;
   bool friction_on_ = true;
   bool simd_ = true;
+  int simd_width_ = avx2_available() ? 4 : 2;
+  static bool avx2_available() {
+#if defined(BEVERLOO_HAVE_AVX2_PAIRS)
+    return avx2::available();
+#else
+    return false;
+#endif
+  }
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
   double max_overlap_ = 0;
@@ -301,6 +318,10 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>
   int q = list_.pairs_begin(b);
   const int q_end = list_.pairs_begin(b + 1);
   const auto u = [](int k) { return static_cast<std::size_t>(static_cast<unsigned>(k)); };  // k >= 0
+#if defined(BEVERLOO_HAVE_AVX2_PAIRS)
+  if (simd_width_ == 4)
+    q = avx2::four_pairs_run<kLane, !kKick>(X, V, F, I, J, T, q, q_end, u(hi), t, law_.mu_n, law_.mu_t, lanes);
+#endif
   for (; q_end - q >= 2; q += 2)
     sse2::two_pairs<kLane, !kKick>(X, V, F, u(I[q]), u(J[q]), u(I[q + 1]), u(J[q + 1]), T[q], T[q + 1], u(hi), t, mu,
                                    lanes);

@@ -1,0 +1,137 @@
+#pragma once
+/// \file sp_pairs_avx2.h
+/// \brief The 2D SP pair run four pairs at a time in AVX2, where the processor has it (chosen
+/// at run time: the build stays free of host tuning), with exactly the bits of the SSE2 run
+/// (sp_pairs_sse2.h) two pairs at a time.
+///
+/// Why: the SSE2 run spends most of its time in the square roots and divisions and in moving
+/// pairs in and out of registers; a 256-bit sqrtpd and divpd do four pairs for about the price
+/// of two. The four pairs' components are transposed into x and y registers (one lane per pair),
+/// so each lane does exactly the SSE2 lane's IEEE operations in its order (no FMA: the functions
+/// are compiled for "avx2" alone, and the build has -ffp-contract=off). Pairs a, b, c, d behave
+/// as the SSE2 calls two_pairs(a, b) and two_pairs(c, d): the same forces added in the same
+/// order, the same lane sums (a and c in lane 0, b and d in lane 1), and a half whose two pairs
+/// both miss adds nothing, as the SSE2 call returns early. Hence the same bits, also of the
+/// energy and power diagnostics (tests/physics/test_force_blocks.cpp compares all three widths).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define BEVERLOO_HAVE_AVX2_PAIRS 1
+#include <immintrin.h>
+
+#include <cstddef>
+#include <cstdint>
+
+#include "sp_pairs_sse2.h"
+
+namespace beverloo::avx2 {
+
+/// Whether this processor runs the AVX2 pair run.
+inline bool available() {
+  static const bool yes = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return yes;
+}
+
+/// [lo hi] from two 128-bit halves.
+[[gnu::always_inline, gnu::target("avx2")]] inline __m256d join(__m128d lo, __m128d hi) {
+  return _mm256_insertf128_pd(_mm256_castpd128_pd256(lo), hi, 1);
+}
+/// A per-pair-type table's values for pairs a, b, c, d (types ta .. td): two aligned loads of
+/// its two-lane rows (PairTables: 4 ta + tb).
+[[gnu::always_inline, gnu::target("avx2")]] inline __m256d lanes4(const double (*table)[2], unsigned kab,
+                                                                  unsigned kcd) {
+  return join(_mm_load_pd(table[kab]), _mm_load_pd(table[kcd]));
+}
+
+/// Pairs q .. of a block's run, four at a time, while four are left; returns where it stopped
+/// (the caller goes on two at a time). Items below hi are the run's block's (see two_pairs).
+template <sse2::Friction kFriction, bool kSums>
+[[gnu::target("avx2")]] int four_pairs_run(const double* X, const double* V, double* F, const int* I, const int* J,
+                                           const std::uint8_t* T, int q, int q_end, std::size_t hi,
+                                           const sse2::PairTables& t, double mu_n, double mu_t,
+                                           sse2::LaneSums& sums) {
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d minus_mu_n = _mm256_set1_pd(-mu_n), mu_t4 = _mm256_set1_pd(mu_t), minus_mu_t = _mm256_set1_pd(-mu_t);
+  const auto u = [](int k) { return static_cast<std::size_t>(static_cast<unsigned>(k)); };  // k >= 0
+  for (; q_end - q >= 4; q += 4) {
+    const std::size_t ia = u(I[q]), ja = u(J[q]), ib = u(I[q + 1]), jb = u(J[q + 1]);
+    const std::size_t ic = u(I[q + 2]), jc = u(J[q + 2]), id = u(I[q + 3]), jd = u(J[q + 3]);
+    // x_i - x_j per pair, as [dx dy] of a and c, and of b and d; then transposed: one lane per pair
+    const __m256d d_ac = _mm256_sub_pd(join(_mm_loadu_pd(X + 2 * ia), _mm_loadu_pd(X + 2 * ic)),
+                                       join(_mm_loadu_pd(X + 2 * ja), _mm_loadu_pd(X + 2 * jc)));
+    const __m256d d_bd = _mm256_sub_pd(join(_mm_loadu_pd(X + 2 * ib), _mm_loadu_pd(X + 2 * id)),
+                                       join(_mm_loadu_pd(X + 2 * jb), _mm_loadu_pd(X + 2 * jd)));
+    const __m256d dx = _mm256_unpacklo_pd(d_ac, d_bd);  // [dx_a dx_b dx_c dx_d]
+    const __m256d dy = _mm256_unpackhi_pd(d_ac, d_bd);
+    const __m256d r2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+    const unsigned kab = 4u * T[q] + T[q + 1], kcd = 4u * T[q + 2] + T[q + 3];
+    const __m256d touching = _mm256_cmp_pd(r2, lanes4(t.lanes_sig2, kab, kcd), _CMP_LT_OQ);
+    const int m = _mm256_movemask_pd(touching);
+    if (m == 0) continue;
+    const __m256d r = _mm256_sqrt_pd(r2);
+    const __m256d inv_sig = lanes4(t.lanes_inv_sig, kab, kcd);
+    const __m256d ov = _mm256_and_pd(touching, _mm256_sub_pd(one, _mm256_mul_pd(r, inv_sig)));
+    const __m256d scale = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_eps, kab, kcd), ov), inv_sig), r);
+    __m256d fx = _mm256_mul_pd(scale, dx), fy = _mm256_mul_pd(scale, dy);
+    __m256d power = _mm256_setzero_pd();
+    if constexpr (kFriction != sse2::Friction::None) {
+      const __m256d v_ac = _mm256_sub_pd(join(_mm_loadu_pd(V + 2 * ia), _mm_loadu_pd(V + 2 * ic)),
+                                         join(_mm_loadu_pd(V + 2 * ja), _mm_loadu_pd(V + 2 * jc)));
+      const __m256d v_bd = _mm256_sub_pd(join(_mm_loadu_pd(V + 2 * ib), _mm_loadu_pd(V + 2 * id)),
+                                         join(_mm_loadu_pd(V + 2 * jb), _mm_loadu_pd(V + 2 * jd)));
+      const __m256d dvx = _mm256_unpacklo_pd(v_ac, v_bd), dvy = _mm256_unpackhi_pd(v_ac, v_bd);
+      __m256d ffx, ffy;
+      if constexpr (kFriction == sse2::Friction::Split) {
+        const __m256d inv_r = _mm256_div_pd(one, r);
+        const __m256d nx = _mm256_mul_pd(dx, inv_r), ny = _mm256_mul_pd(dy, inv_r);
+        const __m256d dot = _mm256_add_pd(_mm256_mul_pd(dvx, nx), _mm256_mul_pd(dvy, ny));
+        const __m256d dvnx = _mm256_mul_pd(dot, nx), dvny = _mm256_mul_pd(dot, ny);
+        ffx = _mm256_sub_pd(_mm256_mul_pd(minus_mu_n, dvnx), _mm256_mul_pd(mu_t4, _mm256_sub_pd(dvx, dvnx)));
+        ffy = _mm256_sub_pd(_mm256_mul_pd(minus_mu_n, dvny), _mm256_mul_pd(mu_t4, _mm256_sub_pd(dvy, dvny)));
+      } else {
+        ffx = _mm256_mul_pd(minus_mu_t, dvx);
+        ffy = _mm256_mul_pd(minus_mu_t, dvy);
+      }
+      ffx = _mm256_and_pd(touching, ffx);
+      ffy = _mm256_and_pd(touching, ffy);
+      if constexpr (kSums) power = _mm256_add_pd(_mm256_mul_pd(ffx, dvx), _mm256_mul_pd(ffy, dvy));
+      fx = _mm256_add_pd(fx, ffx);
+      fy = _mm256_add_pd(fy, ffy);
+    }
+    __m256d energy = _mm256_setzero_pd();
+    if constexpr (kSums) energy = _mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_half_eps, kab, kcd), ov), ov);
+    // back to one register per pair: [fx fy] of a and c, of b and d
+    const __m256d f_ac = _mm256_unpacklo_pd(fx, fy), f_bd = _mm256_unpackhi_pd(fx, fy);
+    // pairs a and b (the first SSE2 call), then c and d (the second), each only if one of its
+    // two touches; the sums lane by lane in that order
+    if (m & 3) {
+      if constexpr (kSums) {
+        sums.energy = _mm_add_pd(sums.energy, _mm256_castpd256_pd128(energy));
+        sums.power = _mm_add_pd(sums.power, _mm256_castpd256_pd128(power));
+      }
+      sums.max_ov = _mm_max_pd(sums.max_ov, _mm256_castpd256_pd128(ov));
+      const __m128d fa = _mm256_castpd256_pd128(f_ac), fb = _mm256_castpd256_pd128(f_bd);
+      _mm_storeu_pd(F + 2 * ia, _mm_add_pd(_mm_loadu_pd(F + 2 * ia), fa));
+      if (ja < hi) _mm_storeu_pd(F + 2 * ja, _mm_sub_pd(_mm_loadu_pd(F + 2 * ja), fa));
+      _mm_storeu_pd(F + 2 * ib, _mm_add_pd(_mm_loadu_pd(F + 2 * ib), fb));
+      if (jb < hi) _mm_storeu_pd(F + 2 * jb, _mm_sub_pd(_mm_loadu_pd(F + 2 * jb), fb));
+    }
+    if (m & 12) {
+      if constexpr (kSums) {
+        sums.energy = _mm_add_pd(sums.energy, _mm256_extractf128_pd(energy, 1));
+        sums.power = _mm_add_pd(sums.power, _mm256_extractf128_pd(power, 1));
+      }
+      sums.max_ov = _mm_max_pd(sums.max_ov, _mm256_extractf128_pd(ov, 1));
+      const __m128d fc = _mm256_extractf128_pd(f_ac, 1), fd = _mm256_extractf128_pd(f_bd, 1);
+      _mm_storeu_pd(F + 2 * ic, _mm_add_pd(_mm_loadu_pd(F + 2 * ic), fc));
+      if (jc < hi) _mm_storeu_pd(F + 2 * jc, _mm_sub_pd(_mm_loadu_pd(F + 2 * jc), fc));
+      _mm_storeu_pd(F + 2 * id, _mm_add_pd(_mm_loadu_pd(F + 2 * id), fd));
+      if (jd < hi) _mm_storeu_pd(F + 2 * jd, _mm_sub_pd(_mm_loadu_pd(F + 2 * jd), fd));
+    }
+  }
+  return q;
+}
+
+}  // namespace beverloo::avx2
+#endif

@@ -9,7 +9,7 @@
 
 #include "../config.h"
 #include "../integrate/exit_watch.h"
-#include "../integrate/sp_sweeps.h"
+#include "../integrate/sp_sweeps_avx2.h"
 #include "drag.h"
 #include "gravity.h"
 #include "hopper_walls.h"
@@ -135,12 +135,12 @@ class ForceField {
     double* F = s.f.data()->data();
     int moved = 0, exiting = 0;
     if (threads_ == 1) {  // no parallel region: even a team of one cost ~2 % of a step in libgomp
-      moved = drift_range<D>(0, n, X, V, F, s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
+      moved = step_drift_range<D>(0, n, X, V, F, s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
     } else {
       // one chunk per thread (a chunk's constants are its own copies, see drift_range)
 #pragma omp parallel for schedule(static) reduction(| : moved, exiting) num_threads(threads_)
       for (int c = 0; c < threads_; ++c)
-        moved |= drift_range<D>(int(long(n) * c / threads_), int(long(n) * (c + 1) / threads_), X, V, F,
+        moved |= step_drift_range<D>(int(long(n) * c / threads_), int(long(n) * (c + 1) / threads_), X, V, F,
                                 s.inv_mass.data(), s.species.data(), s.exited.data(), k, exiting);
     }
     exits_possible = exiting != 0;

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "../integrate/sp_sweeps.h"
+#include "../integrate/sp_sweeps_avx2.h"
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
 #include "kinetic_friction.h"
@@ -231,7 +231,7 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
   if constexpr (kKick) {  // every force of the block is complete
     const double* X = s.x.data()->data();
     const double* F = f.data()->data();
-    sums.nonfinite = kick_range<D>(lo, hi, X, k->V, F, k->half_dt, k->inv_mass, k->late);
+    sums.nonfinite = step_kick_range<D>(lo, hi, X, k->V, F, k->half_dt, k->inv_mass, k->late);
   }
   return sums;
 }

@@ -127,7 +127,9 @@ void check_simd_equals_scalar(double mu, double mu_n, double zeta) {
       touching += (s.x[i] - s.x[*p]).norm() < 0.5 * (s.sigma(i) + s.sigma(*p));
   EXPECT_GT(touching, 500) << "too few contacts for the comparison to mean anything";
   EXPECT_GT(scalar_report.U_contact, 0);
-  if (mu > 0) EXPECT_LT(scalar_report.P_friction, 0);
+  if (mu > 0) {
+    EXPECT_LT(scalar_report.P_friction, 0);
+  }
   if (!four) std::printf("no AVX2 here: four at a time fell back to two\n");
 }
 

@@ -54,6 +54,8 @@ template <sse2::Friction kFriction, bool kSums>
   const __m256d one = _mm256_set1_pd(1.0);
   const __m256d minus_mu_n = _mm256_set1_pd(-mu_n), mu_t4 = _mm256_set1_pd(mu_t), minus_mu_t = _mm256_set1_pd(-mu_t);
   const auto u = [](int k) { return static_cast<std::size_t>(static_cast<unsigned>(k)); };  // k >= 0
+  // the lane sums in registers (through the reference, in memory on every pair)
+  __m128d max_ov = sums.max_ov, energy_sum = sums.energy, power_sum = sums.power;
   for (; q_end - q >= 4; q += 4) {
     const std::size_t ia = u(I[q]), ja = u(J[q]), ib = u(I[q + 1]), jb = u(J[q + 1]);
     const std::size_t ic = u(I[q + 2]), jc = u(J[q + 2]), id = u(I[q + 3]), jd = u(J[q + 3]);
@@ -103,32 +105,69 @@ template <sse2::Friction kFriction, bool kSums>
     if constexpr (kSums) energy = _mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_half_eps, kab, kcd), ov), ov);
     // back to one register per pair: [fx fy] of a and c, of b and d
     const __m256d f_ac = _mm256_unpacklo_pd(fx, fy), f_bd = _mm256_unpackhi_pd(fx, fy);
+    const __m128d fa = _mm256_castpd256_pd128(f_ac), fb = _mm256_castpd256_pd128(f_bd);
+    const __m128d fc = _mm256_extractf128_pd(f_ac, 1), fd = _mm256_extractf128_pd(f_bd, 1);
     // pairs a and b (the first SSE2 call), then c and d (the second), each only if one of its
     // two touches; the sums lane by lane in that order
-    if (m & 3) {
+    const bool on_ab = (m & 3) != 0, on_cd = (m & 12) != 0;
+    if (on_ab) {
       if constexpr (kSums) {
-        sums.energy = _mm_add_pd(sums.energy, _mm256_castpd256_pd128(energy));
-        sums.power = _mm_add_pd(sums.power, _mm256_castpd256_pd128(power));
+        energy_sum = _mm_add_pd(energy_sum, _mm256_castpd256_pd128(energy));
+        power_sum = _mm_add_pd(power_sum, _mm256_castpd256_pd128(power));
       }
-      sums.max_ov = _mm_max_pd(sums.max_ov, _mm256_castpd256_pd128(ov));
-      const __m128d fa = _mm256_castpd256_pd128(f_ac), fb = _mm256_castpd256_pd128(f_bd);
+      max_ov = _mm_max_pd(max_ov, _mm256_castpd256_pd128(ov));
+    }
+    if (on_cd) {
+      if constexpr (kSums) {
+        energy_sum = _mm_add_pd(energy_sum, _mm256_extractf128_pd(energy, 1));
+        power_sum = _mm_add_pd(power_sum, _mm256_extractf128_pd(power, 1));
+      }
+      max_ov = _mm_max_pd(max_ov, _mm256_extractf128_pd(ov, 1));
+    }
+    if (on_ab && on_cd) {
+      // All four add to their items (the common case). The pairs of one row (equal i, adjacent
+      // in the run) add to F[i] in a register, in their order, instead of through a store and
+      // reload per pair (that chain set the pace). The j's first: a j is never the i of its own
+      // or an earlier pair (j > i, and i does not decrease along the run), so every F[i] then
+      // holds what it held when the sequential code reached it, and the sums are its bits.
+      if (ja < hi) _mm_storeu_pd(F + 2 * ja, _mm_sub_pd(_mm_loadu_pd(F + 2 * ja), fa));
+      if (jb < hi) _mm_storeu_pd(F + 2 * jb, _mm_sub_pd(_mm_loadu_pd(F + 2 * jb), fb));
+      if (jc < hi) _mm_storeu_pd(F + 2 * jc, _mm_sub_pd(_mm_loadu_pd(F + 2 * jc), fc));
+      if (jd < hi) _mm_storeu_pd(F + 2 * jd, _mm_sub_pd(_mm_loadu_pd(F + 2 * jd), fd));
+      // whether each pair's i is the previous pair's: [-, b, c, d] from [ia ib ic id] against [ia ia ib ic]
+      const __m128i is = _mm_loadu_si128(reinterpret_cast<const __m128i*>(I + q));
+      const __m128i same = _mm_cmpeq_epi32(is, _mm_shuffle_epi32(is, 0x90));
+      const __m128d sa = _mm_add_pd(_mm_loadu_pd(F + 2 * ia), fa);
+      const __m128d sb =
+          _mm_add_pd(_mm_blendv_pd(_mm_loadu_pd(F + 2 * ib), sa, _mm_castsi128_pd(_mm_shuffle_epi32(same, 0x55))), fb);
+      const __m128d sc =
+          _mm_add_pd(_mm_blendv_pd(_mm_loadu_pd(F + 2 * ic), sb, _mm_castsi128_pd(_mm_shuffle_epi32(same, 0xaa))), fc);
+      const __m128d sd =
+          _mm_add_pd(_mm_blendv_pd(_mm_loadu_pd(F + 2 * id), sc, _mm_castsi128_pd(_mm_shuffle_epi32(same, 0xff))), fd);
+      // in order: where i repeats, the later store holds the later sum
+      _mm_storeu_pd(F + 2 * ia, sa);
+      _mm_storeu_pd(F + 2 * ib, sb);
+      _mm_storeu_pd(F + 2 * ic, sc);
+      _mm_storeu_pd(F + 2 * id, sd);
+      continue;
+    }
+    if (on_ab) {
       _mm_storeu_pd(F + 2 * ia, _mm_add_pd(_mm_loadu_pd(F + 2 * ia), fa));
       if (ja < hi) _mm_storeu_pd(F + 2 * ja, _mm_sub_pd(_mm_loadu_pd(F + 2 * ja), fa));
       _mm_storeu_pd(F + 2 * ib, _mm_add_pd(_mm_loadu_pd(F + 2 * ib), fb));
       if (jb < hi) _mm_storeu_pd(F + 2 * jb, _mm_sub_pd(_mm_loadu_pd(F + 2 * jb), fb));
     }
-    if (m & 12) {
-      if constexpr (kSums) {
-        sums.energy = _mm_add_pd(sums.energy, _mm256_extractf128_pd(energy, 1));
-        sums.power = _mm_add_pd(sums.power, _mm256_extractf128_pd(power, 1));
-      }
-      sums.max_ov = _mm_max_pd(sums.max_ov, _mm256_extractf128_pd(ov, 1));
-      const __m128d fc = _mm256_extractf128_pd(f_ac, 1), fd = _mm256_extractf128_pd(f_bd, 1);
+    if (on_cd) {
       _mm_storeu_pd(F + 2 * ic, _mm_add_pd(_mm_loadu_pd(F + 2 * ic), fc));
       if (jc < hi) _mm_storeu_pd(F + 2 * jc, _mm_sub_pd(_mm_loadu_pd(F + 2 * jc), fc));
       _mm_storeu_pd(F + 2 * id, _mm_add_pd(_mm_loadu_pd(F + 2 * id), fd));
       if (jd < hi) _mm_storeu_pd(F + 2 * jd, _mm_sub_pd(_mm_loadu_pd(F + 2 * jd), fd));
     }
+  }
+  sums.max_ov = max_ov;
+  if constexpr (kSums) {
+    sums.energy = energy_sum;
+    sums.power = power_sum;
   }
   return q;
 }

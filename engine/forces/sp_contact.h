@@ -110,6 +110,27 @@ class SpContact final : public ForceTerm<D> {
   /// bit; the pairs only (loop() adds the incoming pairs and kicks).
   template <Friction kFriction, bool kKick>
   BlockSums pairs_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const;
+#if defined(__SSE2__)
+  /// The SIMD runs' species-pair tables (sp_pairs_sse2.h) from this term's.
+  sse2::PairTables lane_tables() const {
+    sse2::PairTables t;
+    for (int a = 0; a < 2; ++a)
+      for (int c = 0; c < 2; ++c) {
+        t.sig2[2 * a + c] = sig2_[a][c];
+        t.inv_sig[2 * a + c] = inv_sig_[a][c];
+        t.half_eps[2 * a + c] = 0.5 * eps_ab_[a][c];
+        t.eps[2 * a + c] = eps_ab_[a][c];
+      }
+    t.make_lanes();
+    return t;
+  }
+  template <Friction kFriction>
+  static constexpr sse2::Friction lane_friction() {
+    return kFriction == Friction::None   ? sse2::Friction::None
+           : kFriction == Friction::Full ? sse2::Friction::Full
+                                         : sse2::Friction::Split;
+  }
+#endif
   /// The pairs of block b with items of earlier blocks, from the block's side (forces only).
   template <Friction kFriction>
   void incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const;
@@ -251,8 +272,17 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, 
   // the sums in locals (registers): accumulated into the returned struct they lived in memory,
   // a store and reload on every pair's dependency chain
   double energy = 0, power = 0, max_ov = 0;
-  for (int q = list_.pairs_begin(b), q_end = list_.pairs_begin(b + 1); q < q_end; ++q)
-    run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
+  int q = list_.pairs_begin(b);
+  const int q_end = list_.pairs_begin(b + 1);
+#if defined(BEVERLOO_HAVE_AVX2_PAIRS)
+  // 3D, a step: four pairs at a time where the processor has AVX2 (the same bits; no sums needed)
+  if constexpr (D == 3 && kKick)
+    if (simd_width_ == 4 && !friction_group_)
+      q = avx2::four_pairs_run_3d<lane_friction<kFriction>()>(X, V, F, I, J, list_.pair_type(), q, q_end,
+                                                              static_cast<std::size_t>(hi), lane_tables(), law_.mu_n,
+                                                              law_.mu_t, max_ov);
+#endif
+  for (; q < q_end; ++q) run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
   BlockSums sums;
   if constexpr (!kKick) {  // else unused: the compiler drops their arithmetic
     sums.energy = energy;
@@ -294,18 +324,8 @@ template <int D>
 template <typename SpContact<D>::Friction kFriction, bool kKick>
 typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>& s, VecArray<D>& f, int b,
                                                           int hi) const {
-  constexpr auto kLane = kFriction == Friction::None   ? sse2::Friction::None
-                         : kFriction == Friction::Full ? sse2::Friction::Full
-                                                       : sse2::Friction::Split;
-  sse2::PairTables t;
-  for (int a = 0; a < 2; ++a)
-    for (int c = 0; c < 2; ++c) {
-      t.sig2[2 * a + c] = sig2_[a][c];
-      t.inv_sig[2 * a + c] = inv_sig_[a][c];
-      t.half_eps[2 * a + c] = 0.5 * eps_ab_[a][c];
-      t.eps[2 * a + c] = eps_ab_[a][c];
-    }
-  t.make_lanes();
+  constexpr auto kLane = lane_friction<kFriction>();
+  const sse2::PairTables t = lane_tables();
   const double* X = s.x.data()->data();
   const double* V = s.v.data()->data();
   double* F = f.data()->data();

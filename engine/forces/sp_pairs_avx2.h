@@ -172,5 +172,120 @@ template <sse2::Friction kFriction, bool kSums>
   return q;
 }
 
+/// 3D: a particle's [x y z] as [x y z 0] (a masked load: no read past the array's end).
+[[gnu::always_inline, gnu::target("avx2")]] inline __m256d load3(const double* p) {
+  return _mm256_maskload_pd(p, _mm256_set_epi64x(0, -1, -1, -1));
+}
+/// 3D: stores the first three lanes of v at p.
+[[gnu::always_inline, gnu::target("avx2")]] inline void store3(double* p, __m256d v) {
+  _mm_storeu_pd(p, _mm256_castpd256_pd128(v));
+  _mm_store_sd(p + 2, _mm256_extractf128_pd(v, 1));
+}
+/// 3D: [x y z *] of pairs a, b, c, d into one register per component, [x_a x_b x_c x_d] ...
+[[gnu::always_inline, gnu::target("avx2")]] inline void transpose_in(__m256d a, __m256d b, __m256d c, __m256d d,
+                                                                    __m256d& x, __m256d& y, __m256d& z) {
+  const __m256d t0 = _mm256_unpacklo_pd(a, b), t1 = _mm256_unpackhi_pd(a, b);  // [xa xb za zb], [ya yb - -]
+  const __m256d t2 = _mm256_unpacklo_pd(c, d), t3 = _mm256_unpackhi_pd(c, d);
+  x = _mm256_permute2f128_pd(t0, t2, 0x20);
+  z = _mm256_permute2f128_pd(t0, t2, 0x31);
+  y = _mm256_permute2f128_pd(t1, t3, 0x20);
+}
+
+/// Four 32-bit lanes of a mask (all equal) as four 64-bit lanes.
+[[gnu::always_inline, gnu::target("avx2")]] inline __m256d widen(__m128i mask32) {
+  return _mm256_castsi256_pd(_mm256_cvtepi32_epi64(mask32));
+}
+
+/// 3D: the scalar pair loop's pairs q .. of a block's run four at a time in AVX2, while four are
+/// left, for a step (SpContact::block_and_kick: the forces and the largest overlap, no energy or
+/// power); returns where it stopped (the caller goes on one at a time). Each lane does the
+/// scalar pair's operations in its order (SpContact::pair_force, touching_pair), and a pair that
+/// does not touch adds nothing, as in the scalar loop, so the forces are its bits. The pairs of
+/// one row add to F[i] in a register in their order (the j updates first: a j is never the i of
+/// its own or an earlier pair). max_ov: the largest overlap seen (of touching pairs).
+template <sse2::Friction kFriction>
+[[gnu::target("avx2")]] int four_pairs_run_3d(const double* X, const double* V, double* F, const int* I, const int* J,
+                                              const std::uint8_t* T, int q, int q_end, std::size_t hi,
+                                              const sse2::PairTables& t, double mu_n, double mu_t, double& max_ov) {
+  const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
+  const __m256d minus_mu_n = _mm256_set1_pd(-mu_n), mu_t4 = _mm256_set1_pd(mu_t), minus_mu_t = _mm256_set1_pd(-mu_t);
+  const auto u = [](int k) { return static_cast<std::size_t>(static_cast<unsigned>(k)); };  // k >= 0
+  __m256d largest = _mm256_set1_pd(max_ov);
+  for (; q_end - q >= 4; q += 4) {
+    const std::size_t ia = u(I[q]), ja = u(J[q]), ib = u(I[q + 1]), jb = u(J[q + 1]);
+    const std::size_t ic = u(I[q + 2]), jc = u(J[q + 2]), id = u(I[q + 3]), jd = u(J[q + 3]);
+    __m256d dx, dy, dz;
+    transpose_in(_mm256_sub_pd(load3(X + 3 * ia), load3(X + 3 * ja)), _mm256_sub_pd(load3(X + 3 * ib), load3(X + 3 * jb)),
+                 _mm256_sub_pd(load3(X + 3 * ic), load3(X + 3 * jc)), _mm256_sub_pd(load3(X + 3 * id), load3(X + 3 * jd)),
+                 dx, dy, dz);
+    // r2 = dx^2 + dy^2 + dz^2, left to right as the scalar sum (0 + dx^2 is dx^2)
+    const __m256d r2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+    const unsigned kab = 4u * T[q] + T[q + 1], kcd = 4u * T[q + 2] + T[q + 3];
+    const __m256d touching = _mm256_cmp_pd(r2, lanes4(t.lanes_sig2, kab, kcd), _CMP_LT_OQ);
+    const int m = _mm256_movemask_pd(touching);
+    if (m == 0) continue;
+    const __m256d r = _mm256_sqrt_pd(r2);
+    const __m256d inv_sig = lanes4(t.lanes_inv_sig, kab, kcd);
+    const __m256d ov = _mm256_and_pd(touching, _mm256_sub_pd(one, _mm256_mul_pd(r, inv_sig)));
+    largest = _mm256_max_pd(ov, largest);  // a NaN overlap leaves the largest as it was, as the scalar test
+    const __m256d scale = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_eps, kab, kcd), ov), inv_sig), r);
+    __m256d fx = _mm256_mul_pd(scale, dx), fy = _mm256_mul_pd(scale, dy), fz = _mm256_mul_pd(scale, dz);
+    if constexpr (kFriction != sse2::Friction::None) {
+      __m256d dvx, dvy, dvz;
+      transpose_in(_mm256_sub_pd(load3(V + 3 * ia), load3(V + 3 * ja)), _mm256_sub_pd(load3(V + 3 * ib), load3(V + 3 * jb)),
+                   _mm256_sub_pd(load3(V + 3 * ic), load3(V + 3 * jc)), _mm256_sub_pd(load3(V + 3 * id), load3(V + 3 * jd)),
+                   dvx, dvy, dvz);
+      if constexpr (kFriction == sse2::Friction::Split) {
+        const __m256d inv_r = _mm256_div_pd(one, r);
+        const __m256d nx = _mm256_mul_pd(dx, inv_r), ny = _mm256_mul_pd(dy, inv_r), nz = _mm256_mul_pd(dz, inv_r);
+        // dv . n from 0, left to right, as the scalar sum
+        const __m256d dot = _mm256_add_pd(
+            _mm256_add_pd(_mm256_add_pd(zero, _mm256_mul_pd(dvx, nx)), _mm256_mul_pd(dvy, ny)), _mm256_mul_pd(dvz, nz));
+        const __m256d dvnx = _mm256_mul_pd(dot, nx), dvny = _mm256_mul_pd(dot, ny), dvnz = _mm256_mul_pd(dot, nz);
+        fx = _mm256_add_pd(fx, _mm256_sub_pd(_mm256_mul_pd(minus_mu_n, dvnx), _mm256_mul_pd(mu_t4, _mm256_sub_pd(dvx, dvnx))));
+        fy = _mm256_add_pd(fy, _mm256_sub_pd(_mm256_mul_pd(minus_mu_n, dvny), _mm256_mul_pd(mu_t4, _mm256_sub_pd(dvy, dvny))));
+        fz = _mm256_add_pd(fz, _mm256_sub_pd(_mm256_mul_pd(minus_mu_n, dvnz), _mm256_mul_pd(mu_t4, _mm256_sub_pd(dvz, dvnz))));
+      } else {
+        fx = _mm256_add_pd(fx, _mm256_mul_pd(minus_mu_t, dvx));
+        fy = _mm256_add_pd(fy, _mm256_mul_pd(minus_mu_t, dvy));
+        fz = _mm256_add_pd(fz, _mm256_mul_pd(minus_mu_t, dvz));
+      }
+    }
+    // back to one register per pair, [fx fy fz fz]
+    const __m256d u0 = _mm256_unpacklo_pd(fx, fy), u1 = _mm256_unpackhi_pd(fx, fy);
+    const __m256d u2 = _mm256_unpacklo_pd(fz, fz), u3 = _mm256_unpackhi_pd(fz, fz);
+    const __m256d fa = _mm256_permute2f128_pd(u0, u2, 0x20), fc = _mm256_permute2f128_pd(u0, u2, 0x31);
+    const __m256d fb = _mm256_permute2f128_pd(u1, u3, 0x20), fd = _mm256_permute2f128_pd(u1, u3, 0x31);
+    // the j's of the touching pairs, in order
+    if ((m & 1) && ja < hi) store3(F + 3 * ja, _mm256_sub_pd(load3(F + 3 * ja), fa));
+    if ((m & 2) && jb < hi) store3(F + 3 * jb, _mm256_sub_pd(load3(F + 3 * jb), fb));
+    if ((m & 4) && jc < hi) store3(F + 3 * jc, _mm256_sub_pd(load3(F + 3 * jc), fc));
+    if ((m & 8) && jd < hi) store3(F + 3 * jd, _mm256_sub_pd(load3(F + 3 * jd), fd));
+    // the i's: a pair's start is the previous pair's sum where its i is the previous pair's,
+    // else F[i]; a touching pair adds its force (a pair that misses keeps the start)
+    const __m128i is = _mm_loadu_si128(reinterpret_cast<const __m128i*>(I + q));
+    const __m128i same = _mm_cmpeq_epi32(is, _mm_shuffle_epi32(is, 0x90));
+    const __m256d ta = _mm256_permute4x64_pd(touching, 0x00), tb = _mm256_permute4x64_pd(touching, 0x55);
+    const __m256d tc = _mm256_permute4x64_pd(touching, 0xaa), td = _mm256_permute4x64_pd(touching, 0xff);
+    const __m256d start_a = load3(F + 3 * ia);
+    const __m256d sa = _mm256_blendv_pd(start_a, _mm256_add_pd(start_a, fa), ta);
+    const __m256d start_b = _mm256_blendv_pd(load3(F + 3 * ib), sa, widen(_mm_shuffle_epi32(same, 0x55)));
+    const __m256d sb = _mm256_blendv_pd(start_b, _mm256_add_pd(start_b, fb), tb);
+    const __m256d start_c = _mm256_blendv_pd(load3(F + 3 * ic), sb, widen(_mm_shuffle_epi32(same, 0xaa)));
+    const __m256d sc = _mm256_blendv_pd(start_c, _mm256_add_pd(start_c, fc), tc);
+    const __m256d start_d = _mm256_blendv_pd(load3(F + 3 * id), sc, widen(_mm_shuffle_epi32(same, 0xff)));
+    const __m256d sd = _mm256_blendv_pd(start_d, _mm256_add_pd(start_d, fd), td);
+    // in order: where i repeats, the later store holds the later sum
+    store3(F + 3 * ia, sa);
+    store3(F + 3 * ib, sb);
+    store3(F + 3 * ic, sc);
+    store3(F + 3 * id, sd);
+  }
+  const __m128d halves = _mm_max_pd(_mm256_extractf128_pd(largest, 1), _mm256_castpd256_pd128(largest));
+  const double lo = _mm_cvtsd_f64(halves), hi_lane = _mm_cvtsd_f64(_mm_unpackhi_pd(halves, halves));
+  max_ov = lo > hi_lane ? lo : hi_lane;
+  return q;
+}
+
 }  // namespace beverloo::avx2
 #endif

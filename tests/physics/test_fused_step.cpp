@@ -63,7 +63,7 @@ bool same_bits(const VecArray<D>& a, const VecArray<D>& b) {
 /// A flowing pile of n particles (HopperRun, `warm` steps), then `steps` steps by SpModel::step
 /// and by the plain step side by side, compared bit for bit after every step.
 template <int D>
-void check_fused_step(int n, double zeta, double mu, std::int64_t warm, std::int64_t steps) {
+void check_fused_step(int n, double zeta, double mu, std::int64_t warm, std::int64_t steps, double mu_n = -1) {
   SimConfig c;
   c.dimension = D;
   c.N = n;
@@ -71,6 +71,7 @@ void check_fused_step(int n, double zeta, double mu, std::int64_t warm, std::int
   c.w = 5;
   c.zeta = zeta;
   c.mu = mu;
+  if (mu_n >= 0) c.mu_n = mu_n;  // the split friction law
   c.seed = 7;
   c.resolve_and_validate();
   HopperRun<D> run(c, RunOptions{});
@@ -114,6 +115,8 @@ void check_fused_step(int n, double zeta, double mu, std::int64_t warm, std::int
 TEST(FusedStep, EqualsThePlainStepOneBlockDragAndFriction2D) { check_fused_step<2>(300, 0.3, 2.0, 6000, 4000); }
 TEST(FusedStep, EqualsThePlainStepTwoBlocksFriction2D) { check_fused_step<2>(1200, 0.0, 3.0, 6000, 3000); }
 TEST(FusedStep, EqualsThePlainStepTwoBlocksDrag2D) { check_fused_step<2>(1200, 0.3, 0.0, 6000, 3000); }
+TEST(FusedStep, EqualsThePlainStepTwoBlocksFriction3D) { check_fused_step<3>(1200, 0.0, 3.0, 3000, 1500); }
+TEST(FusedStep, EqualsThePlainStepSplitFriction3D) { check_fused_step<3>(500, 0.0, 3.0, 3000, 2000, 1.0); }
 TEST(FusedStep, EqualsThePlainStepDrag3D) { check_fused_step<3>(500, 0.5, 0.0, 3000, 2000); }
 
 }  // namespace

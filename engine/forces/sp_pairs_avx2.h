@@ -13,6 +13,8 @@
 /// order, the same lane sums (a and c in lane 0, b and d in lane 1), and a half whose two pairs
 /// both miss adds nothing, as the SSE2 call returns early. Hence the same bits, also of the
 /// energy and power diagnostics (tests/physics/test_force_blocks.cpp compares all three widths).
+/// Where all four add, the pairs of one row sum into F[i] in a register (see four_pairs_run).
+/// The 3D step's pair run (four_pairs_run_3d) does the same for the scalar 3D loop's pairs.
 #if defined(__x86_64__) && defined(__GNUC__)
 #define BEVERLOO_HAVE_AVX2_PAIRS 1
 #include <immintrin.h>

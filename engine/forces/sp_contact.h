@@ -83,8 +83,7 @@ class SpContact final : public ForceTerm<D> {
   /// two (SSE2) or one by one (1): the same forces, for the tests. Returns the width set (4
   /// without AVX2 sets 2).
   int set_simd_width(int width) {
-    simd_ = width >= 2;
-    simd_width_ = width >= 4 && avx2_available() ? 4 : (width >= 2 ? 2 : 1);
+    simd_width_ = width >= 4 && avx2::available() ? 4 : (width >= 2 ? 2 : 1);
     return simd_width_;
   }
   void set_simd(bool on) { set_simd_width(on ? 4 : 1); }
@@ -184,15 +183,7 @@ class SpContact final : public ForceTerm<D> {
   FrictionLaw law_;
   bool scale_with_sigma_;
   bool friction_on_ = true;
-  bool simd_ = true;
-  int simd_width_ = avx2_available() ? 4 : 2;
-  static bool avx2_available() {
-#if defined(BEVERLOO_HAVE_AVX2_PAIRS)
-    return avx2::available();
-#else
-    return false;
-#endif
-  }
+  int simd_width_ = avx2::available() ? 4 : 2;  ///< pairs per step of the 2D runs (the 3D step's: 4 or 1)
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
   double max_overlap_ = 0;
@@ -244,7 +235,7 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
   BlockSums sums = [&] {
 #if defined(__SSE2__)
     if constexpr (D == 2)
-      if (!friction_group_ && simd_) return pairs_sse2<kFriction, kKick>(s, f, b, hi);
+      if (!friction_group_ && simd_width_ >= 2) return pairs_sse2<kFriction, kKick>(s, f, b, hi);
 #endif
     return pairs<kFriction, kKick>(s, f, b, hi);
   }();

@@ -46,6 +46,24 @@ inline bool available() {
   return join(_mm_load_pd(table[kab]), _mm_load_pd(table[kcd]));
 }
 
+/// Four pairs' contact test and repulsion, one lane per pair, from their squared distances r2
+/// and their species-pair types (kab: 4 ta + tb, kcd: 4 tc + td): which touch (r2 < sigma^2).
+[[gnu::always_inline, gnu::target("avx2")]] inline __m256d touching4(__m256d r2, const sse2::PairTables& t,
+                                                                     unsigned kab, unsigned kcd) {
+  return _mm256_cmp_pd(r2, lanes4(t.lanes_sig2, kab, kcd), _CMP_LT_OQ);
+}
+/// ... and for pairs that may touch: r = sqrt(r2), the overlap ov = 1 - r/sigma (0 where not
+/// touching) and the returned scale (eps ov / sigma) / r of the force along x_i - x_j, in the
+/// scalar pair's order (SpContact::pair_force).
+[[gnu::always_inline, gnu::target("avx2")]] inline __m256d repulsion4(__m256d r2, __m256d touching,
+                                                                      const sse2::PairTables& t, unsigned kab,
+                                                                      unsigned kcd, __m256d& r, __m256d& ov) {
+  r = _mm256_sqrt_pd(r2);
+  const __m256d inv_sig = lanes4(t.lanes_inv_sig, kab, kcd);
+  ov = _mm256_and_pd(touching, _mm256_sub_pd(_mm256_set1_pd(1.0), _mm256_mul_pd(r, inv_sig)));
+  return _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_eps, kab, kcd), ov), inv_sig), r);
+}
+
 /// Pairs q .. of a block's run, four at a time, while four are left; returns where it stopped
 /// (the caller goes on two at a time). Items below hi are the run's block's (see two_pairs).
 template <sse2::Friction kFriction, bool kSums>
@@ -70,13 +88,11 @@ template <sse2::Friction kFriction, bool kSums>
     const __m256d dy = _mm256_unpackhi_pd(d_ac, d_bd);
     const __m256d r2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
     const unsigned kab = 4u * T[q] + T[q + 1], kcd = 4u * T[q + 2] + T[q + 3];
-    const __m256d touching = _mm256_cmp_pd(r2, lanes4(t.lanes_sig2, kab, kcd), _CMP_LT_OQ);
+    const __m256d touching = touching4(r2, t, kab, kcd);
     const int m = _mm256_movemask_pd(touching);
     if (m == 0) continue;
-    const __m256d r = _mm256_sqrt_pd(r2);
-    const __m256d inv_sig = lanes4(t.lanes_inv_sig, kab, kcd);
-    const __m256d ov = _mm256_and_pd(touching, _mm256_sub_pd(one, _mm256_mul_pd(r, inv_sig)));
-    const __m256d scale = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_eps, kab, kcd), ov), inv_sig), r);
+    __m256d r, ov;
+    const __m256d scale = repulsion4(r2, touching, t, kab, kcd, r, ov);
     __m256d fx = _mm256_mul_pd(scale, dx), fy = _mm256_mul_pd(scale, dy);
     __m256d power = _mm256_setzero_pd();
     if constexpr (kFriction != sse2::Friction::None) {
@@ -223,14 +239,12 @@ template <sse2::Friction kFriction>
     // r2 = dx^2 + dy^2 + dz^2, left to right as the scalar sum (0 + dx^2 is dx^2)
     const __m256d r2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
     const unsigned kab = 4u * T[q] + T[q + 1], kcd = 4u * T[q + 2] + T[q + 3];
-    const __m256d touching = _mm256_cmp_pd(r2, lanes4(t.lanes_sig2, kab, kcd), _CMP_LT_OQ);
+    const __m256d touching = touching4(r2, t, kab, kcd);
     const int m = _mm256_movemask_pd(touching);
     if (m == 0) continue;
-    const __m256d r = _mm256_sqrt_pd(r2);
-    const __m256d inv_sig = lanes4(t.lanes_inv_sig, kab, kcd);
-    const __m256d ov = _mm256_and_pd(touching, _mm256_sub_pd(one, _mm256_mul_pd(r, inv_sig)));
+    __m256d r, ov;
+    const __m256d scale = repulsion4(r2, touching, t, kab, kcd, r, ov);
     largest = _mm256_max_pd(ov, largest);  // a NaN overlap leaves the largest as it was, as the scalar test
-    const __m256d scale = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(lanes4(t.lanes_eps, kab, kcd), ov), inv_sig), r);
     __m256d fx = _mm256_mul_pd(scale, dx), fy = _mm256_mul_pd(scale, dy), fz = _mm256_mul_pd(scale, dz);
     if constexpr (kFriction != sse2::Friction::None) {
       __m256d dvx, dvy, dvz;
@@ -289,5 +303,9 @@ template <sse2::Friction kFriction>
   return q;
 }
 
+}  // namespace beverloo::avx2
+#else
+namespace beverloo::avx2 {
+inline bool available() { return false; }  // not an x86-64 GCC build: the SSE2 or scalar paths
 }  // namespace beverloo::avx2
 #endif

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/text_escape.h"
 #include "orchestrator/sweep/sweep.h"
 #include "series_labels.h"
 
@@ -337,39 +338,39 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   for (const Series& s : fits.series) {
     int flowing = 0;
     for (const auto& p : s.points) flowing += p.flowing();
-    csv << '"' << s.label << "\"," << s.model << ',' << s.dimension << ',' << s.N << ',' << fmt(s.E_sp, 10) << ','
+    csv << csv_field(s.label) << ',' << csv_field(s.model) << ',' << s.dimension << ',' << s.N << ',' << fmt(s.E_sp, 10) << ','
         << fmt(s.K_l, 10) << ',' << fmt(s.K_b, 10) << ',' << fmt(s.E_c, 10) << ',' << fmt(s.zeta, 10) << ','
         << fmt(s.mu, 10) << ',' << format_lambda(s.lambda) << ',' << flowing << ',' << s.clogged_points() << ',';
     if (s.fit)
       csv << fmt(s.fit->C, 8) << ',' << fmt(s.fit->C_err, 4) << ',' << fmt(s.fit->k, 8) << ',' << fmt(s.fit->k_err, 4) << ','
           << fmt(s.fit->beta, 8) << ',' << fmt(s.fit->beta_err, 4) << ',' << fmt(s.fit->chi2_red, 4) << ",\n";
     else
-      csv << ",,,,,,,\"" << s.message << "\"\n";
-    md << "| " << s.label << " | " << flowing << " | " << s.clogged_points() << " | ";
+      csv << ",,,,,,," << csv_field(s.message) << "\n";
+    md << "| " << markdown_cell(s.label) << " | " << flowing << " | " << s.clogged_points() << " | ";
     if (s.fit)
       md << fmt(s.fit->C) << " ± " << fmt(s.fit->C_err, 2) << " | " << fmt(s.fit->k) << " ± " << fmt(s.fit->k_err, 2) << " | "
          << fmt(s.fit->beta) << " ± " << fmt(s.fit->beta_err, 2) << " | " << fmt(s.fit->chi2_red, 3) << " |\n";
     else
-      md << "no fit: " << s.message << " | | | |\n";
+      md << "no fit: " << markdown_cell(s.message) << " | | | |\n";
   }
   xcsv << "label,dimension,points,lambda_c,lambda_c_err,b,b_err,chi2_red,beta_lambda0,beta_inf,message\n";
   xmd << "| group | points | lambda_c | b | chi2_red | beta(lambda=0) | beta(lambda=inf) |\n|---|---|---|---|---|---|---|\n";
   for (const Crossover& g : fits.crossovers) {
     const std::string b0 = g.limit0 && g.limit0->fit ? fmt(g.limit0->fit->beta) : "";
     const std::string binf = g.limit_inf && g.limit_inf->fit ? fmt(g.limit_inf->fit->beta) : "";
-    xcsv << '"' << g.label << "\"," << g.dimension << ',' << g.finite.size() << ',';
+    xcsv << csv_field(g.label) << ',' << g.dimension << ',' << g.finite.size() << ',';
     if (g.fit)
       xcsv << fmt(g.fit->lambda_c, 8) << ',' << fmt(g.fit->lambda_c_err, 4) << ',' << fmt(g.fit->b, 8) << ','
            << fmt(g.fit->b_err, 4) << ',' << fmt(g.fit->chi2_red, 4);
     else
       xcsv << ",,,,";
-    xcsv << ',' << b0 << ',' << binf << ",\"" << g.message << "\"\n";
-    xmd << "| " << g.label << " | " << g.finite.size() << " | ";
+    xcsv << ',' << b0 << ',' << binf << ',' << csv_field(g.message) << "\n";
+    xmd << "| " << markdown_cell(g.label) << " | " << g.finite.size() << " | ";
     if (g.fit)
       xmd << fmt(g.fit->lambda_c) << " ± " << fmt(g.fit->lambda_c_err, 2) << " | " << fmt(g.fit->b) << " ± "
           << fmt(g.fit->b_err, 2) << " | " << fmt(g.fit->chi2_red, 3);
     else
-      xmd << "no fit: " << g.message << " | | ";
+      xmd << "no fit: " << markdown_cell(g.message) << " | | ";
     xmd << " | " << b0 << " | " << binf << " |\n";
   }
   const std::filesystem::path d(dir);

@@ -3,18 +3,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/text_escape.h"
 #include "engine/protocol/run_result.h"
 #include "orchestrator/campaign/store.h"
 #include "reports/number_format.h"
 
 namespace beverloo {
 namespace {
-
-std::string html_escape(const std::string& s) {
-  std::string o;
-  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
-  return o;
-}
 
 std::string pm(double v, double e) { return format_with_error(v, e, " &plusmn; "); }
 

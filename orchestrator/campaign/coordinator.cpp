@@ -23,6 +23,7 @@
 #include "job_files.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
+#include "core/text_escape.h"
 #include "orchestrator/db/migrations.h"
 #include "store.h"
 
@@ -103,7 +104,7 @@ class Coordinator {
       // kept aside under another name, and the job runs again in a directory of its own
       const std::string aside = dir + ".not-a-directory";
       fs::rename(dir, aside);
-      std::fprintf(stderr, "[beverloo] %s was not a directory; moved to %s\n", dir.c_str(), aside.c_str());
+      std::fprintf(stderr, "[beverloo] %s was not a directory; moved to %s\n", terminal_safe(dir).c_str(), terminal_safe(aside).c_str());
     }
     fs::create_directories(dir);
     const nlohmann::json spec = {{"key", job.key},
@@ -227,7 +228,7 @@ class Coordinator {
   void log_event(const ClaimedJob& job, const std::string& what, const std::string& message) {
     if (o_.progress != ProgressMode::Log) return;
     std::fprintf(stderr, "[beverloo] job %s %s%s%s\n", job.key.substr(0, 12).c_str(), what.c_str(),
-                 message.empty() ? "" : ": ", message.c_str());
+                 message.empty() ? "" : ": ", terminal_safe(message).c_str());
   }
 
   void progress(const StateCounts& c, Clock::time_point start, bool final_line) {

@@ -19,6 +19,7 @@
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
+#include "core/text_escape.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -62,14 +63,16 @@ int expand_command(const std::string& path, const std::string& format) {
   }
   const char* sep = format == "csv" ? "," : "  ";
   std::printf(format == "csv" ? "%s" : "%-16s", "key");
-  for (const auto& c : cols) std::printf(format == "csv" ? "%s%s" : "%s%-12s", sep, c.c_str());
+  // csv: RFC 4180 fields (the data as it is); table: what a terminal shows as written
+  auto cell = [&](const std::string& text) { return format == "csv" ? csv_field(text) : terminal_safe(text); };
+  for (const auto& c : cols) std::printf(format == "csv" ? "%s%s" : "%s%-12s", sep, cell(c).c_str());
   std::printf("\n");
   for (const JobSpec& j : jobs) {
     std::printf(format == "csv" ? "%s" : "%-16s", (format == "csv" ? j.key : j.key.substr(0, 16)).c_str());
-    for (const auto& c : cols) std::printf(format == "csv" ? "%s%s" : "%s%-12s", sep, fmt(value(j, c)).c_str());
+    for (const auto& c : cols) std::printf(format == "csv" ? "%s%s" : "%s%-12s", sep, cell(fmt(value(j, c))).c_str());
     std::printf("\n");
   }
-  if (format == "table") std::printf("(%zu jobs from sweep \"%s\")\n", jobs.size(), s.name.c_str());
+  if (format == "table") std::printf("(%zu jobs from sweep \"%s\")\n", jobs.size(), terminal_safe(s.name).c_str());
   return exit_code::kOk;
 }
 
@@ -83,7 +86,7 @@ int status_command(const std::string& dir) {
   name.bind(1, id);
   name.step();
   const StateCounts c = store.counts(id);
-  std::printf("campaign     %s (created %s) in %s\n", name.get_text(0).c_str(), name.get_text(1).c_str(), dir.c_str());
+  std::printf("campaign     %s (created %s) in %s\n", terminal_safe(name.get_text(0)).c_str(), terminal_safe(name.get_text(1)).c_str(), terminal_safe(dir).c_str());
   std::printf("jobs         %lld: %lld done, %lld clogged, %lld failed, %lld cancelled, %lld running, %lld pending\n",
               (long long)c.total(), (long long)c.done, (long long)c.clogged, (long long)c.failed, (long long)c.cancelled,
               (long long)c.running, (long long)c.pending);
@@ -99,7 +102,7 @@ int status_command(const std::string& dir) {
   bool first = true;
   while (endings.step()) {
     const std::string status = endings.get_text(0);
-    std::printf("%s %lld %s: %s\n", first ? "runs ended  " : "            ", (long long)endings.get_int(1), status.c_str(),
+    std::printf("%s %lld %s: %s\n", first ? "runs ended  " : "            ", (long long)endings.get_int(1), terminal_safe(status).c_str(),
                 run_status_meaning(status));
     first = false;
   }
@@ -121,7 +124,7 @@ int status_command(const std::string& dir) {
   fails.bind(1, id);
   std::string classes;
   while (fails.step()) classes += (classes.empty() ? "" : ", ") + fails.get_text(0) + " " + std::to_string(fails.get_int(1));
-  std::printf("failures     %s\n", classes.empty() ? "none" : classes.c_str());
+  std::printf("failures     %s\n", classes.empty() ? "none" : terminal_safe(classes).c_str());
   if (db.scalar_int("PRAGMA user_version") >= 4 && db.scalar_int("SELECT count(*) FROM slurm_submissions") > 0) {
     // Slurm's view as the coordinator last saw it (attempts.slurm_state), per state
     db::Statement arrays = db.prepare("SELECT count(*), coalesce(sum(array_size), 0) FROM slurm_submissions WHERE state = 'submitted'");
@@ -133,7 +136,7 @@ int status_command(const std::string& dir) {
     std::string states;
     while (live.step()) states += (states.empty() ? "" : ", ") + live.get_text(0) + " " + std::to_string(live.get_int(1));
     std::printf("slurm        %lld arrays, %lld tasks; attempts in flight: %s\n", (long long)arrays.get_int(0),
-                (long long)arrays.get_int(1), states.empty() ? "none" : states.c_str());
+                (long long)arrays.get_int(1), states.empty() ? "none" : terminal_safe(states).c_str());
   }
   return exit_code::kOk;
 }
@@ -226,7 +229,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
     exit_status = guarded("sweep check", [&] {
       std::vector<JobSpec> jobs;
       const Sweep s = load_sweep(*check_path, &jobs);
-      std::printf("%s: valid, sweep \"%s\", %zu jobs\n", check_path->c_str(), s.name.c_str(), jobs.size());
+      std::printf("%s: valid, sweep \"%s\", %zu jobs\n", terminal_safe(*check_path).c_str(), terminal_safe(s.name).c_str(), jobs.size());
       return exit_code::kOk;
     });
   });
@@ -251,7 +254,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
       const Sweep s = load_sweep(*create_path, &jobs, &text);
       CampaignWriter writer(*dir, CampaignWriter::Open::CreateIfMissing);
       CampaignStore(writer.db()).create_campaign(s, text, jobs);
-      std::printf("campaign \"%s\" with %zu jobs in %s\n", s.name.c_str(), jobs.size(), dir->c_str());
+      std::printf("campaign \"%s\" with %zu jobs in %s\n", terminal_safe(s.name).c_str(), jobs.size(), terminal_safe(*dir).c_str());
       return exit_code::kOk;
     });
   });

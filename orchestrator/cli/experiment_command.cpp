@@ -10,6 +10,7 @@
 #include "guarded.h"
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/experiment/experiment_store.h"
+#include "core/text_escape.h"
 
 namespace beverloo {
 namespace {
@@ -32,21 +33,21 @@ int import_command(ImportArgs a) {
   experiment::store_import(writer.db(), p, a.o.replace);
   std::printf("series %s (%s): sigma_avg = %.4g m, g_eff = %.4g m/s^2, t0 = %.4g s; fit of dN/dt = -c0 sqrt(N) "
               "without the first and last %d exits, blocks of %d\n",
-              p.series.c_str(), p.provenance.c_str(), p.units.sigma_avg_m, p.units.g_eff_m_s2, p.units.t0_s, p.fit_skip,
+              terminal_safe(p.series).c_str(), terminal_safe(p.provenance).c_str(), p.units.sigma_avg_m, p.units.g_eff_m_s2, p.units.t0_s, p.fit_skip,
               p.block_exits);
   int fitted = 0;
   for (const experiment::FittedRun& r : p.runs) {
     if (r.fit.ok) {
       ++fitted;
       std::printf("  run %-12s w = %6.3f sigma_avg  N0 = %5d  c0 = %.4g +- %.2g /s  Q = %.4g +- %.2g\n",
-                  r.run->name.c_str(), r.w, r.run->n_initial, r.fit.c0, r.fit.c0_err, r.Q, r.Q_err);
+                  terminal_safe(r.run->name).c_str(), r.w, r.run->n_initial, r.fit.c0, r.fit.c0_err, r.Q, r.Q_err);
     } else {
-      std::printf("  run %-12s w = %6.3f sigma_avg  N0 = %5d  no fit: %s\n", r.run->name.c_str(), r.w,
-                  r.run->n_initial, r.fit.message.c_str());
+      std::printf("  run %-12s w = %6.3f sigma_avg  N0 = %5d  no fit: %s\n", terminal_safe(r.run->name).c_str(), r.w,
+                  r.run->n_initial, terminal_safe(r.fit.message).c_str());
     }
   }
   std::printf("stored %zu runs (%d fitted) in %s; `beverloo fit %s` fits Q = C (w - k)^beta to them\n", p.runs.size(),
-              fitted, campaign_dir::database_path(a.dir).c_str(), a.dir.c_str());
+              fitted, terminal_safe(campaign_dir::database_path(a.dir)).c_str(), terminal_safe(a.dir).c_str());
   return exit_code::kOk;
 }
 
@@ -73,7 +74,7 @@ int export_command(const ExportArgs& a) {
   const std::string source = "beverloo " BEVERLOO_VERSION " draining-hopper simulations (" +
                              std::to_string(drains.size()) + " jobs), not a measurement";
   write_text_atomically(a.out, experiment::simulated_drains_csv(drains, a.series, source, a.geometry, a.sigma, a.g_eff));
-  std::printf("wrote %zu simulated drains to %s (provenance: simulated)\n", drains.size(), a.out.c_str());
+  std::printf("wrote %zu simulated drains to %s (provenance: simulated)\n", drains.size(), terminal_safe(a.out).c_str());
   return exit_code::kOk;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "core/failures.h"
+#include "core/text_escape.h"
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/sweep/sweep.h"
@@ -19,28 +20,28 @@ inline int guarded(const char* cmd, F&& body) {
   try {
     return body();
   } catch (const SweepError& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kConfig;
   } catch (const ConfigError& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kConfig;
   } catch (const MissingCampaign& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kConfig;
   } catch (const CampaignBusy& e) {
-    std::fprintf(stderr, "beverloo %s: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kBusy;
   } catch (const db::DbError& e) {
-    std::fprintf(stderr, "beverloo %s: database: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: database: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kIo;
   } catch (const IoError& e) {
-    std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kIo;
   } catch (const std::filesystem::filesystem_error& e) {  // a name too long, a loop of links, a file for a directory
-    std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kIo;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "beverloo %s: internal error: %s\n", cmd, e.what());
+    std::fprintf(stderr, "beverloo %s: internal error: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kInternal;
   }
 }

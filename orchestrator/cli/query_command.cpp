@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "guarded.h"
 #include "core/failures.h"
+#include "core/text_escape.h"
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/db/migrations.h"
@@ -80,13 +81,6 @@ int past_deadline(void* p) {
   auto* d = static_cast<Deadline*>(p);
   d->passed = std::chrono::steady_clock::now() > d->end;
   return d->passed ? 1 : 0;  // non-zero interrupts the statement
-}
-
-std::string csv_quote(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 int run_query(const std::string& dir, const std::string& sql, const std::string& format, double max_seconds,
@@ -164,10 +158,10 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
       std::vector<std::string> names;
       for (int i = 0; i < n; ++i) names.push_back(st.column_name(i));
       if (format == "csv") {
-        for (int i = 0; i < n; ++i) std::cout << (i ? "," : "") << csv_quote(names[i]);
+        for (int i = 0; i < n; ++i) std::cout << (i ? "," : "") << csv_field(names[i]);
         std::cout << "\n";
         for (const auto& r : rows) {
-          for (int i = 0; i < n; ++i) std::cout << (i ? "," : "") << csv_quote(r[i]);
+          for (int i = 0; i < n; ++i) std::cout << (i ? "," : "") << csv_field(r[i]);
           std::cout << "\n";
         }
       } else if (format == "json") {
@@ -205,15 +199,15 @@ int run_query(const std::string& dir, const std::string& sql, const std::string&
     }
     return exit_code::kOk;
   } catch (const MissingCampaign& e) {
-    std::fprintf(stderr, "beverloo query: %s\n", e.what());
+    std::fprintf(stderr, "beverloo query: %s\n", terminal_safe(e.what()).c_str());
     return exit_code::kConfig;
   } catch (const db::DbError& e) {
     if ((e.code() & 0xff) == SQLITE_AUTH) {
       std::fprintf(stderr, "beverloo query: %s: queries are read-only (SELECT, WITH, EXPLAIN, reading PRAGMAs and "
-                           "table_info, index_list, ...); nothing ran\n", e.what());
+                           "table_info, index_list, ...); nothing ran\n", terminal_safe(e.what()).c_str());
       return exit_code::kConfig;
     }
-    std::fprintf(stderr, "beverloo query: %s\n", e.what());
+    std::fprintf(stderr, "beverloo query: %s\n", terminal_safe(e.what()).c_str());
     return exit_code::kIo;
   } catch (const std::exception& e) {  // not ours (ConfigError), busy, I/O: the shared table
     return guarded("query", [&]() -> int { throw; });

@@ -11,6 +11,7 @@
 #include "orchestrator/campaign/campaign_dir.h"
 #include "reports/campaign_fits.h"
 #include "reports/report.h"
+#include "core/text_escape.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -20,7 +21,7 @@ int report_campaign(const std::string& dir, const std::string& out) {
     const auto figures = write_report(dir, out);
     int made = 0;
     for (const auto& f : figures) made += f.made;
-    std::printf("report: %s/index.html (%d of %zu figures; tables beverloo_fits and crossover_fits)\n", out.c_str(), made,
+    std::printf("report: %s/index.html (%d of %zu figures; tables beverloo_fits and crossover_fits)\n", terminal_safe(out).c_str(), made,
                 figures.size());
     return exit_code::kOk;
   });
@@ -41,7 +42,7 @@ void add_report_commands(CLI::App& app, int& exit_status) {
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits) and %s/*.csv, *.md\n",
-                  dir->c_str(), out.c_str());
+                  terminal_safe(*dir).c_str(), terminal_safe(out).c_str());
       return exit_code::kOk;
     });
   });

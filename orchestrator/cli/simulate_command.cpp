@@ -14,6 +14,7 @@
 #include "engine/protocol/hopper_run.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
+#include "core/text_escape.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -33,7 +34,7 @@ struct SimulateArgs {
 SimConfig read_job(const std::string& path) { return SimConfig::from_json(read_json_file(path)); }
 
 void print_summary(const RunResult& r, const SimConfig& c) {
-  std::printf("status        %s (%s)\n", r.status.c_str(), r.stop_reason.c_str());
+  std::printf("status        %s (%s)\n", terminal_safe(r.status).c_str(), terminal_safe(r.stop_reason).c_str());
   if (r.draining) {
     std::printf("Q = c0 t0     %.6g +- %.3g (%.2f%%)  [dN/dt = -c0 sqrt(N); c0 per t0]\n", r.Q, r.Q_err, 100 * r.Q_rel_err);
     std::printf("drain         %d -> %d particles; fit over %d exits in %d blocks (%.1f .. %.1f t0), chi2_red %.2f%s%s\n",
@@ -47,7 +48,7 @@ void print_summary(const RunResult& r, const SimConfig& c) {
   if (r.clogged) std::printf("clog          last exit at t = %.1f, detected at t = %.1f\n", r.clog_time, r.clog_detected_time);
   std::printf("rho_n         %.4g +- %.2g   Q' = %.6g\n", r.rho_n, r.rho_n_err, r.Q_prime);
   std::printf("|F_drag|      %.4g   |F_friction| %.4g   ratio %.4g\n", r.mean_F_drag, r.mean_F_friction, r.force_ratio);
-  std::printf("dt            %.4g (limited by %s), %lld steps, seed %llu\n", r.dt, r.dt_limiting_term.c_str(),
+  std::printf("dt            %.4g (limited by %s), %lld steps, seed %llu\n", r.dt, terminal_safe(r.dt_limiting_term).c_str(),
               static_cast<long long>(r.steps), static_cast<unsigned long long>(r.seed));
   std::printf("speed         %.3g particle-steps/s, %.1f s wall\n", r.particle_steps_per_second, r.wall_seconds);
 }
@@ -60,7 +61,7 @@ int run_simulate(const SimulateArgs& a) {
     check_memory(c);            // and a job this machine cannot hold
     check_threads("--threads", a.threads);
   } catch (const ConfigError& e) {
-    std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
+    std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", terminal_safe(e.what()).c_str());
     return exit_code::kConfig;
   }
   const std::string dir = a.out_dir.empty() ? (fs::path("out") / fs::path(a.job_path).stem()).string() : a.out_dir;
@@ -70,7 +71,7 @@ int run_simulate(const SimulateArgs& a) {
       if (!a.overwrite) {
         std::fprintf(stderr,
                      "beverloo simulate: %s already holds a run; use --resume to continue it or --overwrite to start over\n",
-                     dir.c_str());
+                     terminal_safe(dir).c_str());
         return exit_code::kConfig;
       }
       for (const char* name : {job_output::kResult, job_output::kCheckpoint, job_output::kSummary, job_output::kFailure,
@@ -80,22 +81,22 @@ int run_simulate(const SimulateArgs& a) {
     if (a.resume) {
       const job_output::ResultCheck done = job_output::check_result(dir, c);
       if (done.state == job_output::ResultState::OtherJob) {
-        std::fprintf(stderr, "beverloo simulate: %s\n", done.reason.c_str());
+        std::fprintf(stderr, "beverloo simulate: %s\n", terminal_safe(done.reason).c_str());
         return exit_code::kConfig;
       }
       if (done.state == job_output::ResultState::Complete) {
-        std::fprintf(stderr, "beverloo simulate: %s is already complete\n", dir.c_str());
+        std::fprintf(stderr, "beverloo simulate: %s is already complete\n", terminal_safe(dir).c_str());
         return exit_code::kOk;
       }
       if (done.state == job_output::ResultState::Damaged) {
-        std::fprintf(stderr, "beverloo simulate: %s; running the job again\n", done.reason.c_str());
+        std::fprintf(stderr, "beverloo simulate: %s; running the job again\n", terminal_safe(done.reason).c_str());
         job_output::remove_result(dir);
       }
     }
     fs::create_directories(dir);
     write_text_atomically((fs::path(dir) / "job.json").string(), c.to_json().dump(2) + "\n");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "beverloo simulate: I/O error: %s\n", e.what());
+    std::fprintf(stderr, "beverloo simulate: I/O error: %s\n", terminal_safe(e.what()).c_str());
     return exit_code::kIo;
   }
 
@@ -111,7 +112,7 @@ int run_simulate(const SimulateArgs& a) {
   opt.stop_request = install_stop_handlers();
   // failure.json for people; the class and the exit code come from the one table
   auto fail = [&](FailureClass cls, const char* what, const std::string& message) {
-    std::fprintf(stderr, "\nbeverloo simulate: %s: %s\n", what, message.c_str());
+    std::fprintf(stderr, "\nbeverloo simulate: %s: %s\n", what, terminal_safe(message).c_str());
     try {
       nlohmann::json j = {{"status", "failed"}, {"failure_class", std::string(to_string(cls))}, {"message", message}};
       write_text_atomically((fs::path(dir) / "failure.json").string(), j.dump(2) + "\n");
@@ -122,7 +123,7 @@ int run_simulate(const SimulateArgs& a) {
   try {
     const RunResult r = run_hopper(c, opt);
     if (r.status == "interrupted") {
-      std::fprintf(stderr, "beverloo simulate: %s\n", r.stop_reason.c_str());
+      std::fprintf(stderr, "beverloo simulate: %s\n", terminal_safe(r.stop_reason).c_str());
       return exit_code::kInterrupted;
     }
     if (a.json)
@@ -131,12 +132,12 @@ int run_simulate(const SimulateArgs& a) {
       print_summary(r, c);
     return exit_code::kOk;
   } catch (const ConfigError& e) {
-    std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", e.what());
+    std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", terminal_safe(e.what()).c_str());
     return failure_info(FailureClass::InvalidParameters).exit_code;
   } catch (const InstabilityError& e) {
-    return fail(FailureClass::BlowUp, "unstable run", e.what());
+    return fail(FailureClass::BlowUp, "unstable run", terminal_safe(e.what()).c_str());
   } catch (const IoError& e) {
-    return fail(FailureClass::Io, "I/O error", e.what());
+    return fail(FailureClass::Io, "I/O error", terminal_safe(e.what()).c_str());
   }
 }
 

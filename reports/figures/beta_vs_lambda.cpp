@@ -1,6 +1,7 @@
 // beta versus lambda per crossover group, with the fitted sigmoid and the two limits.
 #include <cmath>
 
+#include "core/text_escape.h"
 #include "figure.h"
 #include "reports/fit.h"
 
@@ -17,8 +18,8 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
     const std::string style = series_style(k++, n);
     const int points = f.begin_block(g.label + ": lambda beta beta_err");
     for (const Series* s : g.finite) f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
-    f.plots.push_back("DATA index " + std::to_string(points) + " using 1:2:3 with yerrorbars " + style + " title \"" +
-                      g.label + "\"");
+    f.plots.push_back("DATA index " + std::to_string(points) + " using 1:2:3 with yerrorbars " + style + " title " +
+                      gnuplot_string(g.label));
     if (g.fit) {
       const int curve = f.begin_block(g.label + ": sigmoid lambda beta");
       const double lo = std::log10(g.finite.front()->lambda) - 1, hi = std::log10(g.finite.back()->lambda) + 1;
@@ -28,7 +29,7 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
       }
       char label[96];
       std::snprintf(label, sizeof label, "fit, lambda_c = %.2g", g.fit->lambda_c);
-      f.plots.push_back("DATA index " + std::to_string(curve) + " using 1:2 with lines " + style + " title \"" + label + "\"");
+      f.plots.push_back("DATA index " + std::to_string(curve) + " using 1:2 with lines " + style + " title " + gnuplot_string(label));
     }
     for (const auto& [lim, name, dash] :
          {std::tuple{g.limit0, "lambda = 0", 2}, std::tuple{g.limit_inf, "lambda = inf", 4}})
@@ -36,7 +37,7 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
         char value[64];
         std::snprintf(value, sizeof value, "%s: beta %.2f", name, lim->fit->beta);
         f.plots.push_back(num(lim->fit->beta) + " with lines dt " + std::to_string(dash) + " " +
-                          style.substr(0, style.find(" pt")) + " title \"" + value + "\"");
+                          style.substr(0, style.find(" pt")) + " title " + gnuplot_string(value));
       }
   }
   return finish(f, c.dir, "needs series at several finite lambda > 0 (a lambda sweep)");

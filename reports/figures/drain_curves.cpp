@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/protocol/drain_fit.h"
+#include "core/text_escape.h"
 #include "figure.h"
 
 namespace beverloo::figures {
@@ -42,7 +43,7 @@ ReportFigure drain_curves(const FigureContext& c) {
     f.data << num(0) << " " << p.n0 << "\n";
     for (std::size_t k = 0; k < t.size(); ++k) f.data << num(t[k] / p.t0) << " " << (p.n0 - static_cast<int>(k) - 1) << "\n";
     f.plots.push_back("DATA index " + std::to_string(data) + " using 1:2 with steps " + style.substr(0, style.find(" pt")) +
-                      " title \"" + p.label + "\"");
+                      " title " + gnuplot_string(p.label));
     if (!fit.ok) continue;
     // the law through the fit's first block: N_a droplets at t_a
     const int first = p.skip;

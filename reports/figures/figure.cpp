@@ -5,7 +5,9 @@
 #include <cstdlib>
 
 #include "core/atomic_file.h"
+#include "core/child_process.h"
 #include "core/errors.h"
+#include "core/text_escape.h"
 
 namespace beverloo::figures {
 namespace fs = std::filesystem;
@@ -40,18 +42,25 @@ std::string series_style(int k, int n) {
 
 int Figure::begin_block(const std::string& header) {
   if (blocks) data << "\n\n";
-  data << "# " << header << "\n";
+  data << "# " << terminal_safe(header) << "\n";  // one comment line, whatever the header holds
   return blocks++;
 }
 
 namespace {
+/// A figure of a few thousand points renders in well under a second; a gnuplot that takes this
+/// long is stuck (a damaged font cache, a terminal waiting for input).
+constexpr double kGnuplotTimeLimit_s = 120;
+
 void render(Figure& f, const fs::path& dir) {
   const std::string dat = f.name + ".dat";
   write_text_atomically((dir / dat).string(), f.data.str());
   std::ostringstream gp;
   // the title is the page's caption (index.html), not repeated inside the figure
-  gp << "# " << f.title << "\n# Rendered by beverloo report; edit and run `gnuplot " << f.name << ".gp` in this directory.\n"
-     << "set xlabel \"" << f.xlabel << "\" noenhanced\nset ylabel \"" << f.ylabel << "\" noenhanced\n"
+  // Every text that is not beverloo's own gnuplot syntax goes in as a single-quoted literal
+  // (gnuplot_string): a user's series or run name is data, never a command.
+  gp << "# " << terminal_safe(f.title) << "\n# Rendered by beverloo report; edit and run `gnuplot " << f.name
+     << ".gp` in this directory.\n"
+     << "set xlabel " << gnuplot_string(f.xlabel) << " noenhanced\nset ylabel " << gnuplot_string(f.ylabel) << " noenhanced\n"
      << "set key outside below left Left reverse maxrows 8 font ',9' noenhanced\nset grid\nset pointsize 1.1\n"
      << f.extra;
   auto with_data = [&](std::string text) {
@@ -64,10 +73,14 @@ void render(Figure& f, const fs::path& dir) {
   gp << "set terminal svg size 900,720 dynamic background rgb 'white'\nset output '" << f.name << ".svg'\n" << plot
      << "\nset terminal pngcairo size 900,720\nset output '" << f.name << ".png'\n" << plot << "\nunset output\n";
   write_text_atomically((dir / (f.name + ".gp")).string(), gp.str());
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + f.name + ".gp' 2> '" + f.name + ".log'";
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0 || !fs::exists(dir / (f.name + ".svg")) || !fs::exists(dir / (f.name + ".png")))
-    throw IoError("gnuplot failed on " + (dir / (f.name + ".gp")).string() + " (see " + f.name + ".log)");
+  // no shell: the report directory's path is an argument, never part of a command line
+  const ChildResult r = run_child({"gnuplot", f.name + ".gp"}, kGnuplotTimeLimit_s, dir.string());
+  if (r.rc != 0 || !fs::exists(dir / (f.name + ".svg")) || !fs::exists(dir / (f.name + ".png"))) {
+    const fs::path log = dir / (f.name + ".log");
+    write_text_atomically(log.string(), r.text());
+    throw IoError("gnuplot failed on " + (dir / (f.name + ".gp")).string() +
+                  (r.rc == 127 ? " (is gnuplot installed and on PATH?)" : "") + " (see " + log.string() + ")");
+  }
   fs::remove(dir / (f.name + ".log"));
 }
 }  // namespace

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "core/text_escape.h"
 #include "figure.h"
 
 namespace beverloo::figures {
@@ -37,7 +38,7 @@ ReportFigure k_heatmap_Kl_Kb(const FigureContext& c) {
       for (const Series* s : list)
         f.data << num(s->K_l) << " " << num(s->K_b) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
       // each panel's group is its own title (the figure's title is the page's caption)
-      body << "set title \"" << label << "\" noenhanced font ',9'\n"
+      body << "set title " << gnuplot_string(label) << " noenhanced font ',9'\n"
            << "plot DATA index " << block << " using 1:2:3 with points pt 5 ps 5 palette notitle, \\\n"
            << "     DATA index " << block
            << " using 1:2:(sprintf('%.2f+-%.2f', $3, $4)) with labels offset 0,2 font ',8' notitle\n";

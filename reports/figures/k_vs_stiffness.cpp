@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "core/text_escape.h"
 #include "figure.h"
 
 namespace beverloo::figures {
@@ -33,7 +34,7 @@ ReportFigure k_versus(const FigureContext& c, bool dp) {
     const int block = f.begin_block(label + (dp ? ": K_b k k_err" : ": E_sp k k_err"));
     for (const Series* s : list) f.data << num(stiffness(s)) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
     f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2:3 with yerrorlines " +
-                      series_style(k++, static_cast<int>(lines.size())) + " title \"" + label + "\"");
+                      series_style(k++, static_cast<int>(lines.size())) + " title " + gnuplot_string(label));
   }
   return finish(f, c.dir,
                 dp ? "needs fitted DP series at two or more K_b with the other parameters equal"

@@ -2,6 +2,7 @@
 // series' own fit puts its points on a line of slope beta.
 #include <cmath>
 
+#include "core/text_escape.h"
 #include "figure.h"
 
 namespace beverloo::figures {
@@ -21,7 +22,7 @@ void plot_collapse(Figure& f, const std::vector<const Series*>& list) {
     char beta[64];
     std::snprintf(beta, sizeof beta, " (beta %.2f)", s.fit->beta);
     f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2:3 with yerrorbars " + series_style(k++, n) +
-                      " title \"" + s.label + beta + "\"");
+                      " title " + gnuplot_string(s.label + beta));
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/text_escape.h"
 #include "figure.h"
 #include "reports/fit.h"
 
@@ -28,8 +29,8 @@ void plot_q_vs_w(Figure& f, const std::vector<const Series*>& list) {
       f.data << rows.str();
       const std::string colour = style.substr(0, style.find(" pt"));
       f.plots.push_back("DATA index " + std::to_string(points) + " using 1:2:3 with yerrorbars " +
-                        (limited ? colour + " pt 6" : style) + " title \"" + s.label +
-                        (limited ? " (stopped at t_max)" : "") + "\"");
+                        (limited ? colour + " pt 6" : style) + " title " +
+                        gnuplot_string(s.label + (limited ? " (stopped at t_max)" : "")));
     }
     if (s.fit) {
       const int curve = f.begin_block(s.label + ": fitted curve w Q");

@@ -1,5 +1,6 @@
 // The coarse-grained velocity along gravity v_g(h) on the centre line, per job of the first
 // four series, with its error as a band.
+#include "core/text_escape.h"
 #include "figure.h"
 
 namespace beverloo::figures {
@@ -41,8 +42,8 @@ ReportFigure velocity_profiles(const FigureContext& c) {
     f.plots.push_back("DATA index " + std::to_string(block) +
                       " using 1:($2-$3):($2+$3) with filledcurves fs transparent solid 0.25 noborder " + colour +
                       " notitle");
-    f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2 with lines lw 1.5 " + colour + " title \"" +
-                      curves[k].label + "\"");
+    f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2 with lines lw 1.5 " + colour + " title " +
+                      gnuplot_string(curves[k].label));
   }
   return finish(f, c.dir, "no velocity profiles in the database");
 }

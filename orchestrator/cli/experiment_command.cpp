@@ -1,6 +1,8 @@
 // `beverloo experiment import FILE --dir D` (measured droplet exits into a campaign) and
 // `beverloo experiment export-drain JOB_DIR... -o FILE` (a simulated drain as such a file,
 // labelled simulated): docs/experiments.md.
+#include <cmath>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 
@@ -58,8 +60,17 @@ struct ExportArgs {
 };
 
 int export_command(const ExportArgs& a) {
-  if (!(a.sigma > 0)) throw ConfigError("--sigma-m", "the droplet diameter to convert to, in metres, is required");
-  if (!(a.g_eff > 0)) throw ConfigError("--g-eff", "the effective gravity to convert to, in m/s^2, is required");
+  if (!(a.sigma > 0) || !std::isfinite(a.sigma))
+    throw ConfigError("--sigma-m", "the droplet diameter to convert to, in metres, is required (a finite number > 0)");
+  if (!(a.g_eff > 0) || !std::isfinite(a.g_eff))
+    throw ConfigError("--g-eff", "the effective gravity to convert to, in m/s^2, is required (a finite number > 0)");
+  if (!std::isfinite(std::sqrt(a.sigma / a.g_eff)) || !(std::sqrt(a.sigma / a.g_eff) > 0))
+    throw ConfigError("--sigma-m", "with this --g-eff the time unit sqrt(sigma_avg / g_eff) is not a finite number > 0");
+  // a header value is one line of text: a line break would forge a header line (a provenance)
+  for (const auto& [option, value] : {std::pair{"--series", &a.series}, std::pair{"--geometry", &a.geometry}})
+    for (unsigned char c : *value)
+      if (c < 0x20 || c == 0x7F)
+        throw ConfigError(option, "\"" + terminal_safe(*value) + "\": must be one line without control characters");
   std::vector<experiment::SimulatedDrain> drains;
   std::string keys;
   for (const std::string& dir : a.jobs) {
@@ -69,7 +80,12 @@ int export_command(const ExportArgs& a) {
     std::snprintf(name, sizeof name, "w%g-", d.w);
     std::string job = std::filesystem::path(dir).filename().string();
     if (job.empty()) job = std::filesystem::path(dir).parent_path().filename().string();
+    // a row's first field: only characters that need no quoting in CSV and mean nothing in it
+    for (char& c : job)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '_';
     drains.push_back({name + job.substr(0, 12), d.w, d.exit_time});
+    if (!std::isfinite(d.w * a.sigma))
+      throw ConfigError("--sigma-m", "the orifice width w = " + std::to_string(d.w) + " in metres is not a finite number");
   }
   const std::string source = "beverloo " BEVERLOO_VERSION " draining-hopper simulations (" +
                              std::to_string(drains.size()) + " jobs), not a measurement";

@@ -19,6 +19,20 @@ dirs=$("$BIN" query "$WORK/c" "SELECT dir FROM jobs WHERE theta_w_right_deg = 0 
 "$BIN" experiment export-drain $dirs -o "$WORK/sim.csv" --sigma-m 3.15e-4 --g-eff 0.639 --series "sim 45/0" --geometry 45/0 > /dev/null \
   || fail "export-drain failed"
 grep -q "^# provenance: simulated" "$WORK/sim.csv" || fail "the exported file does not say it is simulated"
+# a header value is one line: a line break in --series would forge a provenance line; an
+# infinite unit would be written as inf and refused by the file's own import
+# shellcheck disable=SC2086
+refuse_export() {  # OPTION ARGS...: export-drain with ARGS exits 2 naming OPTION, and writes nothing
+  local option=$1; shift
+  # shellcheck disable=SC2086
+  set +e; "$BIN" experiment export-drain $dirs -o "$WORK/forged.csv" "$@" > /dev/null 2> "$WORK/err"; local rc=$?; set -e
+  [ "$rc" -eq 2 ] && grep -q -- "$option: " "$WORK/err" || fail "export-drain $* gave exit $rc: $(cat "$WORK/err")"
+  [ ! -e "$WORK/forged.csv" ] || fail "a refused export-drain $* wrote a file"
+}
+refuse_export --series --series "$(printf 'x\n# provenance: measured')" --sigma-m 3.15e-4 --g-eff 0.639
+refuse_export --geometry --geometry "$(printf '45/45\r')" --sigma-m 3.15e-4 --g-eff 0.639
+refuse_export --g-eff --g-eff inf --sigma-m 3.15e-4
+refuse_export --sigma-m --sigma-m 1e308 --g-eff 0.639
 
 # a bad copy: a time that goes back on line 20; nothing may change in the campaign
 sqlite3 "$WORK/c/campaign.sqlite" .dump > "$WORK/before.sql"

@@ -99,12 +99,10 @@ struct SimConfig {
   double theta_w_right_deg = 90.0;  ///< funnel angle from gravity, right wall (2D)
   // --- interactions -------------------------------------------------------------------
   double E_sp = 100.0;  ///< pair stiffness, units g rho sigma^(d+1)
-  /// "energy": every pair has the energy scale E_sp (the paper's text); "force": the pair's
-  /// energy scale is E_sp sigma_mn, a constant force scale E_sp/sigma_avg as in the authors' code
-  /// (force spK (1 - r/sigma_mn), docs/authors-model.md).
+  /// The SP pairs' normal law, a row of the registry in forces/contact_laws.cpp: "energy"
+  /// (every pair the energy scale E_sp, the paper's text), "force" (E_sp sigma_mn, a constant
+  /// force scale as in the authors' code, docs/authors-model.md), "hertz", ...
   std::string sp_contact_law = "energy";
-  /// The energy scale of a pair of species of diameters sigma_m, sigma_n (SP).
-  double pair_energy(double sigma_mn) const { return sp_contact_law == "force" ? E_sp * sigma_mn : E_sp; }
   double E_w = 1e4;     ///< wall stiffness
   double zeta = -1;     ///< viscous drag; required
   double mu = -1;       ///< kinetic friction; required

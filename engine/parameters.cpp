@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "config.h"
+#include "forces/contact_laws.h"
 #include "units.h"
 
 // Rows are designated initialisers that name only what differs from ParamSpec's member
@@ -56,9 +57,9 @@ std::vector<ParamSpec> build_table() {
        .doc = "pair stiffness, U = (E_sp/2)(1 - r/sigma_mn)^2", .access = REAL(E_sp), .lo = 0, .lo_open = true,
        .models = M::Sp, .sql_column = "E_sp"},
       {.path = "sp_contact_law", .type = T::Text, .unit = "-", .default_text = "\"energy\"",
-       .doc = "\"energy\": every pair has the energy scale E_sp (the text); \"force\": a pair's is E_sp sigma_mn, a constant force scale (the authors' code)",
+       .doc = normal_law_docs(),
        .access = TEXT(sp_contact_law), .models = M::Sp, .omit_at_default = true, .sql_column = "sp_contact_law",
-       .sql_default = "CASE WHEN model = 'sp' THEN 'energy' END", .allowed = "energy,force"},
+       .sql_default = "CASE WHEN model = 'sp' THEN 'energy' END", .allowed = normal_law_names()},
       {.path = "E_w", .type = T::Real, .unit = "g rho sigma_avg^(d+1)", .default_text = "1e4",
        .doc = "wall stiffness, U = (E_w/2)(1 - 2 d/sigma)^2 (DP: per vertex, d against delta)", .access = REAL(E_w),
        .lo = 0, .lo_open = true, .sql_column = "E_w"},

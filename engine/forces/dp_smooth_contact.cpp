@@ -58,14 +58,14 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     return;  // beyond the end: the next edge's start vertex (its wedge) or its slab; or no corners
   }
   if constexpr (kMode != Mode::FrictionOnly) {
-    double dU_dd;
-    energy += HarmonicOverlap::energy(eps_, d, 1.0 / dmn, dU_dd);
+    double law_ov;  // the law's overlap 1 - d * (1/dmn); max_ov keeps its own d / dmn (its bits)
+    const double repulsion = NormalLaw::force(eps_, 1.0 / dmn, d, energy, law_ov);  // -dU/dd
     const double ov = 1.0 - d / dmn;
     if (ov > max_ov) {
       max_ov = ov;
       worst_ = {b, a};
     }
-    const Vec<2> fb = -dU_dd * dir;  // on the vertex, away from the edge
+    const Vec<2> fb = repulsion * dir;  // on the vertex, away from the edge
     f[b] += fb;
     f[a] -= w_start * fb;
     f[an] -= w_end * fb;

@@ -40,6 +40,7 @@
 #include "../dp/polygons.h"
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
+#include "harmonic_overlap.h"
 #include "kinetic_friction.h"
 
 namespace beverloo {
@@ -96,6 +97,10 @@ class DpSmoothContact final : public ForceTerm<2> {
 
  private:
   enum class Mode { Repulsion, RepulsionAndFriction, FrictionOnly };
+  /// The repulsion of an edge and a vertex at distance d < delta_mn, a normal law of the seam
+  /// (contact_laws.h): the harmonic law of the paper. The DP models have no job parameter
+  /// that chooses another yet; one would make this a registry row as SpContact does.
+  using NormalLaw = HarmonicOverlap;
   template <Mode kMode>
   TermOutput loop(const ParticleState<2>& s, VecArray<2>& f) const;
   /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.

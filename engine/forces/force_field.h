@@ -30,7 +30,7 @@ class ForceField {
  public:
   ForceField(const SimConfig& c, const Hopper<D>& hopper)
       : list_(c.skin),
-        contact_(list_, c.E_sp, FrictionLaw{c.mu_normal(), c.mu_tangential()}, c.sp_contact_law == "force"),
+        contact_(list_, c.E_sp, FrictionLaw{c.mu_normal(), c.mu_tangential()}, normal_law(c.sp_contact_law)),
         walls_(hopper, list_, c.E_w),
         gravity_(c.gravity),
         drag_(drag_coefficients(c.zeta, c.drag_rate, Species::bidisperse(D, c.size_ratio).mass)),

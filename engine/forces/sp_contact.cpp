@@ -13,7 +13,7 @@ void SpContact<D>::prepare(const ParticleState<D>& s) {
       const double sig = 0.5 * (s.sp.sigma[a] + s.sp.sigma[b]);
       sig2_[a][b] = sig * sig;
       inv_sig_[a][b] = 1.0 / sig;
-      eps_ab_[a][b] = scale_with_sigma_ ? eps_ * sig : eps_;
+      eps_ab_[a][b] = normal_->energy_scale(eps_, sig);
     }
   list_.update_block_lists(s.species.data());
 }

@@ -1,9 +1,12 @@
 #pragma once
 /// \file sp_contact.h
-/// \brief Soft-particle contacts: harmonic repulsion U = (E_sp/2)(1 - r/sigma_mn)^2 and kinetic
-/// friction on overlapping pairs (full or split along the centre line, kinetic_friction.h),
-/// evaluated in one pass over the Verlet list, block by block (neighbor_list.h: blocks; each
-/// block adds only to its own items' forces, so blocks can run on threads).
+/// \brief Soft-particle contacts: a normal law's repulsion (contact_laws.h: the harmonic
+/// U = (eps/2)(1 - r/sigma_mn)^2 of the paper, Hertz, ...) and kinetic friction on overlapping
+/// pairs (full or split along the centre line, kinetic_friction.h), evaluated in one pass over
+/// the Verlet list, block by block (neighbor_list.h: blocks; each block adds only to its own
+/// items' forces, so blocks can run on threads). The pair loops are written once, over the
+/// normal law as a type; the law's registry row hands this term the loops made for it
+/// (SpContactLoops), so a law is chosen once per block, never per pair.
 ///
 /// Why one pass: friction acts exactly on the pairs that overlap, so both parts share the
 /// distance test; a second loop over the list would double the memory traffic of the hottest
@@ -15,7 +18,9 @@
 
 #include "../integrate/sp_sweeps_avx2.h"
 #include "../neighbor/neighbor_list.h"
+#include "contact_laws.h"
 #include "force_term.h"
+#include "harmonic_overlap.h"
 #include "kinetic_friction.h"
 #include "sp_pairs_avx2.h"
 #include "sp_pairs_sse2.h"
@@ -25,9 +30,11 @@ namespace beverloo {
 template <int D>
 class SpContact final : public ForceTerm<D> {
  public:
-  /// scale_with_sigma: the pair's energy scale is E_sp sigma_mn (sp_contact_law "force")
-  SpContact(NeighborList<D>& list, double E_sp, FrictionLaw friction, bool scale_with_sigma = false)
-      : list_(list), eps_(E_sp), law_(friction), scale_with_sigma_(scale_with_sigma) {}
+  /// normal: the normal law's registry row (contact_laws.h; the pair's energy scale from E_sp)
+  SpContact(NeighborList<D>& list, double E_sp, FrictionLaw friction, const NormalLawRow& normal = normal_law("energy"))
+      : list_(list), eps_(E_sp), law_(friction), normal_(&normal), loops_(&normal.loops<D>()) {
+    set_simd_width(simd_width_);
+  }
   std::string_view name() const override { return "sp_contact"; }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
     prepare(s);
@@ -61,16 +68,24 @@ class SpContact final : public ForceTerm<D> {
   void prepare(const ParticleState<D>& s);
   /// The pairs of block b of the list: forces on the block's own items only, so blocks can
   /// run on different threads (neighbor_list.h, blocks()).
-  BlockSums block(const ParticleState<D>& s, VecArray<D>& f, int b) const {
-    if (!friction_on_ || !law_.active()) return loop<Friction::None, false>(s, f, b, nullptr);
-    return law_.split() ? loop<Friction::Split, false>(s, f, b, nullptr) : loop<Friction::Full, false>(s, f, b, nullptr);
-  }
+  BlockSums block(const ParticleState<D>& s, VecArray<D>& f, int b) const { return (this->*loops_->block)(s, f, b); }
   /// block() for a step: the same forces, no energy or power sums (only the largest overlap),
   /// and each of the block's items that is not late kicked once the block's forces are complete,
   /// while the block is still in cache: no separate kick over all items.
   BlockSums block_and_kick(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick& k) const {
-    if (!friction_on_ || !law_.active()) return loop<Friction::None, true>(s, f, b, &k);
-    return law_.split() ? loop<Friction::Split, true>(s, f, b, &k) : loop<Friction::Full, true>(s, f, b, &k);
+    return (this->*loops_->block_and_kick)(s, f, b, k);
+  }
+  /// block() and block_and_kick() for the normal law Normal (SpContactLoops holds these).
+  template <class Normal>
+  BlockSums block_as(const ParticleState<D>& s, VecArray<D>& f, int b) const {
+    if (!friction_on_ || !law_.active()) return loop<Normal, Friction::None, false>(s, f, b, nullptr);
+    return law_.split() ? loop<Normal, Friction::Split, false>(s, f, b, nullptr)
+                        : loop<Normal, Friction::Full, false>(s, f, b, nullptr);
+  }
+  template <class Normal>
+  BlockSums block_and_kick_as(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick& k) const {
+    if (!friction_on_ || !law_.active()) return loop<Normal, Friction::None, true>(s, f, b, &k);
+    return law_.split() ? loop<Normal, Friction::Split, true>(s, f, b, &k) : loop<Normal, Friction::Full, true>(s, f, b, &k);
   }
   TermOutput finish(const BlockSums& total) {
     max_overlap_ = total.max_overlap;
@@ -81,9 +96,9 @@ class SpContact final : public ForceTerm<D> {
   void set_friction_enabled(bool on) { friction_on_ = on; }
   /// The 2D pair runs four pairs at a time (AVX2, where the processor has it: the default),
   /// two (SSE2) or one by one (1): the same forces, for the tests. Returns the width set (4
-  /// without AVX2 sets 2).
+  /// without AVX2 sets 2; a normal law without a lane form always runs one by one).
   int set_simd_width(int width) {
-    simd_width_ = width >= 4 && avx2::available() ? 4 : (width >= 2 ? 2 : 1);
+    simd_width_ = !normal_->lanes ? 1 : width >= 4 && avx2::available() ? 4 : (width >= 2 ? 2 : 1);
     return simd_width_;
   }
   void set_simd(bool on) { set_simd_width(on ? 4 : 1); }
@@ -94,19 +109,21 @@ class SpContact final : public ForceTerm<D> {
   /// Largest relative overlap 1 - r/sigma_mn seen in the last accumulate().
   double max_overlap() const { return max_overlap_; }
   const FrictionLaw& friction() const { return law_; }
+  const NormalLawRow& normal_law_row() const { return *normal_; }
 
  private:
   enum class Friction { None, Full, Split };
   /// kKick: block_and_kick() (k its kick), else block() (k null).
-  template <Friction kFriction, bool kKick>
+  template <class Normal, Friction kFriction, bool kKick>
   BlockSums loop(const ParticleState<D>& s, VecArray<D>& f, int b, const Kick* k) const;
   /// Block b's pair run (NeighborList::pairs_begin): each pair's force added to i, and
   /// subtracted from j if j is this block's (else j's block adds it: incoming()). The pairs
   /// only: loop() adds the incoming pairs and kicks.
-  template <Friction kFriction, bool kKick>
+  template <class Normal, Friction kFriction, bool kKick>
   BlockSums pairs(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const;
   /// 2D: block b's pair run two pairs at a time (sp_pairs_sse2.h), the same forces bit for
-  /// bit; the pairs only (loop() adds the incoming pairs and kicks).
+  /// bit; the pairs only (loop() adds the incoming pairs and kicks). The lanes are the lane
+  /// form of HarmonicOverlap, the one law that has one so far.
   template <Friction kFriction, bool kKick>
   BlockSums pairs_sse2(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const;
 #if defined(__SSE2__)
@@ -131,20 +148,20 @@ class SpContact final : public ForceTerm<D> {
   }
 #endif
   /// The pairs of block b with items of earlier blocks, from the block's side (forces only).
-  template <Friction kFriction>
+  template <class Normal, Friction kFriction>
   void incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const;
   /// The force on i from j (dx = x_i - x_j, r2 = |dx|^2 < sigma_ij^2) into fij; the energy and
   /// friction power of the pair into sums. Exactly antisymmetric: from j's side (dx and the
   /// velocities negated) every operation gives the negated value, so a pair evaluated by two
   /// blocks adds opposite forces.
-  template <Friction kFriction>
+  template <class Normal, Friction kFriction>
   [[gnu::always_inline]] inline void pair_force(const double* vi, const double* vj, const double* dx, double r2, int si,
                                                 int sj, bool rub, double* fij, double& energy, double& power,
                                                 double& max_overlap) const;
   /// Listed pair (i, j) seen from i (xi: i's position, si its species): if the two touch, the
   /// force on i into fij, energy and power into the sums, and true. The one scalar pair of the
   /// rows, the incoming lists and the SSE2 rows' odd pair.
-  template <Friction kFriction>
+  template <class Normal, Friction kFriction>
   [[gnu::always_inline]] inline bool touching_pair(const double* X, const double* V, const std::uint8_t* species, int i,
                                                    const double* xi, int si, int j, double* fij, double& energy,
                                                    double& power, double& max_overlap) const {
@@ -155,18 +172,18 @@ class SpContact final : public ForceTerm<D> {
     }
     const int sj = species[j];
     if (r2 >= sig2_[si][sj]) return false;
-    pair_force<kFriction>(V + i * D, V + j * D, dx, r2, si, sj, rubs(i, j), fij, energy, power, max_overlap);
+    pair_force<Normal, kFriction>(V + i * D, V + j * D, dx, r2, si, sj, rubs(i, j), fij, energy, power, max_overlap);
     return true;
   }
   /// Pair (i, j) of a block's pair run, one at a time: if the two touch, the force added to i
   /// and subtracted from j if j < hi (else j's block adds it: incoming()). The scalar pairs()
   /// and the SSE2 run's odd pair.
-  template <Friction kFriction>
+  template <class Normal, Friction kFriction>
   [[gnu::always_inline]] inline void run_pair(const double* X, const double* V, double* F, const std::uint8_t* species,
                                               int i, int j, int hi, double& energy, double& power,
                                               double& max_overlap) const {
     double fij[D];
-    if (!touching_pair<kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_overlap)) return;
+    if (!touching_pair<Normal, kFriction>(X, V, species, i, X + i * D, species[i], j, fij, energy, power, max_overlap)) return;
     for (int d = 0; d < D; ++d) F[i * D + d] += fij[d];
     if (j < hi)
       for (int d = 0; d < D; ++d) F[j * D + d] -= fij[d];
@@ -181,7 +198,8 @@ class SpContact final : public ForceTerm<D> {
   NeighborList<D>& list_;  ///< not const: prepare() brings its incoming lists up to date
   double eps_;
   FrictionLaw law_;
-  bool scale_with_sigma_;
+  const NormalLawRow* normal_;
+  const SpContactLoops<D>* loops_;  ///< the pair loops of the normal law
   bool friction_on_ = true;
   int simd_width_ = avx2::available() ? 4 : 2;  ///< pairs per step of the 2D runs (the 3D step's: 4 or 1)
   const std::vector<int>* friction_group_ = nullptr;
@@ -191,18 +209,30 @@ class SpContact final : public ForceTerm<D> {
   double sig2_[2][2], inv_sig_[2][2], eps_ab_[2][2];
 };
 
+/// The pair loops of one normal law (contact_laws.h), as its registry row hands them out.
 template <int D>
-template <typename SpContact<D>::Friction kFriction>
+struct SpContactLoops {
+  typename SpContact<D>::BlockSums (SpContact<D>::*block)(const ParticleState<D>&, VecArray<D>&, int) const;
+  typename SpContact<D>::BlockSums (SpContact<D>::*block_and_kick)(const ParticleState<D>&, VecArray<D>&, int,
+                                                                    const typename SpContact<D>::Kick&) const;
+  template <class Normal>
+  static const SpContactLoops& of() {
+    static const SpContactLoops loops{&SpContact<D>::template block_as<Normal>,
+                                      &SpContact<D>::template block_and_kick_as<Normal>};
+    return loops;
+  }
+};
+
+template <int D>
+template <class Normal, typename SpContact<D>::Friction kFriction>
 [[gnu::always_inline]] inline void SpContact<D>::pair_force(const double* vi, const double* vj, const double* dx,
                                                             double r2, int si, int sj, bool rub, double* fij,
                                                             double& energy, double& power, double& max_overlap) const {
   const double r = std::sqrt(r2);
-  // HarmonicOverlap, written out: U = (eps/2) ov^2, ov = 1 - r/sigma, |F| = eps ov / sigma
-  const double ov = 1.0 - r * inv_sig_[si][sj];
-  energy += 0.5 * eps_ab_[si][sj] * ov * ov;
+  double ov;
+  // |F| / r: (eps ov / sigma) / r for the harmonic law, in the lane forms' order
+  const double scale = Normal::force(eps_ab_[si][sj], inv_sig_[si][sj], r, energy, ov) / r;
   max_overlap = ov > max_overlap ? ov : max_overlap;
-  // (eps ov / sigma) / r in HarmonicOverlap's order: the DP rough contact's sums stay bit for bit
-  const double scale = eps_ab_[si][sj] * ov * inv_sig_[si][sj] / r;
   for (int d = 0; d < D; ++d) fij[d] = scale * dx[d];  // on i, along x_i - x_j (repulsive)
   if constexpr (kFriction != Friction::None) {
     if (rub) {
@@ -228,18 +258,18 @@ template <typename SpContact<D>::Friction kFriction>
 }
 
 template <int D>
-template <typename SpContact<D>::Friction kFriction, bool kKick>
+template <class Normal, typename SpContact<D>::Friction kFriction, bool kKick>
 typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, VecArray<D>& f, int b,
                                                     const Kick* k) const {
   const int lo = list_.block_begin(b), hi = list_.block_begin(b + 1);
   BlockSums sums = [&] {
 #if defined(__SSE2__)
-    if constexpr (D == 2)
+    if constexpr (D == 2 && Normal::kLanes)
       if (!friction_group_ && simd_width_ >= 2) return pairs_sse2<kFriction, kKick>(s, f, b, hi);
 #endif
-    return pairs<kFriction, kKick>(s, f, b, hi);
+    return pairs<Normal, kFriction, kKick>(s, f, b, hi);
   }();
-  if (lo > 0) incoming<kFriction>(s, f, b);
+  if (lo > 0) incoming<Normal, kFriction>(s, f, b);
   if constexpr (kKick) {  // every force of the block is complete
     const double* X = s.x.data()->data();
     const double* F = f.data()->data();
@@ -249,7 +279,7 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
 }
 
 template <int D>
-template <typename SpContact<D>::Friction kFriction, bool kKick>
+template <class Normal, typename SpContact<D>::Friction kFriction, bool kKick>
 typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, VecArray<D>& f, int b, int hi) const {
   // Plain component arithmetic on the arrays' doubles (a Vec<D> is D packed doubles): where
   // Eigen temporaries were taken by reference, GCC spilled them to the stack and reloaded them
@@ -267,13 +297,13 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, 
   const int q_end = list_.pairs_begin(b + 1);
 #if defined(BEVERLOO_HAVE_AVX2_PAIRS)
   // 3D, a step: four pairs at a time where the processor has AVX2 (the same bits; no sums needed)
-  if constexpr (D == 3 && kKick)
+  if constexpr (D == 3 && kKick && Normal::kLanes)
     if (simd_width_ == 4 && !friction_group_)
       q = avx2::four_pairs_run_3d<lane_friction<kFriction>()>(X, V, F, I, J, list_.pair_type(), q, q_end,
                                                               static_cast<std::size_t>(hi), lane_tables(), law_.mu_n,
                                                               law_.mu_t, max_ov);
 #endif
-  for (; q < q_end; ++q) run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
+  for (; q < q_end; ++q) run_pair<Normal, kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
   BlockSums sums;
   if constexpr (!kKick) {  // else unused: the compiler drops their arithmetic
     sums.energy = energy;
@@ -284,7 +314,7 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, 
 }
 
 template <int D>
-template <typename SpContact<D>::Friction kFriction>
+template <class Normal, typename SpContact<D>::Friction kFriction>
 void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) const {
   const double* X = s.x.data()->data();
   const double* V = s.v.data()->data();
@@ -303,7 +333,7 @@ void SpContact<D>::incoming(const ParticleState<D>& s, VecArray<D>& f, int b) co
     const int sj = species[j];
     for (const int *p = list_.incoming_begin(j), *end = list_.incoming_end(j); p != end; ++p) {
       double fji[D];
-      if (!touching_pair<kFriction>(X, V, species, j, xj, sj, *p, fji, sink_energy, sink_power, sink_max)) continue;
+      if (!touching_pair<Normal, kFriction>(X, V, species, j, xj, sj, *p, fji, sink_energy, sink_power, sink_max)) continue;
       for (int d = 0; d < D; ++d) fj[d] += fji[d];
     }
     for (int d = 0; d < D; ++d) F[j * D + d] += fj[d];
@@ -338,7 +368,7 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs_sse2(const ParticleState<D>
                                    lanes);
   double energy = 0, power = 0, max_ov = 0;
   // the last, odd pair: the scalar code, after the others as in pairs()
-  if (q != q_end) run_pair<kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
+  if (q != q_end) run_pair<HarmonicOverlap, kFriction>(X, V, F, species, I[q], J[q], hi, energy, power, max_ov);
   BlockSums sums;
   if constexpr (!kKick) {
     sums.energy = energy + sse2::sum_lanes(lanes.energy);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "../forces/contact_laws.h"
 #include "../forces/harmonic_overlap.h"
 #include "../io/vec_io.h"
 #include "../protocol/placement.h"
@@ -16,13 +17,14 @@ TimeScales SpModel<D>::time_scales(const SimConfig& c) {
   const Species sp = Species::bidisperse(c.dimension, c.size_ratio);
   const char* names[2] = {"small", "large"};
   const double mu_max = std::max(c.mu_normal(), c.mu_tangential());  // the stronger friction
+  const NormalLawRow& law = normal_law(c.sp_contact_law);
   TimeScales s;
   for (int a = 0; a < 2; ++a) {
     for (int b = a; b < 2; ++b) {
       const double m_red = sp.mass[a] * sp.mass[b] / (sp.mass[a] + sp.mass[b]);
       const std::string pair = std::string(names[a]) + "-" + names[b];
       const double sig_ab = 0.5 * (sp.sigma[a] + sp.sigma[b]);
-      s.oscillation(m_red, HarmonicOverlap::stiffness(c.pair_energy(sig_ab), sig_ab), "E_sp (" + pair + " contact)");
+      s.oscillation(m_red, law.stiffness(law.energy_scale(c.E_sp, sig_ab), sig_ab), "E_sp (" + pair + " contact)");
       if (mu_max > 0) s.damping(m_red / mu_max, "mu (kinetic friction, " + pair + ")");
     }
     // wall: U = (E_w/2)(1 - d/(sigma/2))^2, contact distance sigma/2, infinite wall mass

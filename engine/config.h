@@ -83,6 +83,20 @@ struct DpParams {
   /// Smooth DP: width of an edge's circulo-line in units of the reference edge length l0
   /// (physics.md 4: 0.1; the authors' code runs 0.2, docs/authors-model.md).
   double contact_width = 0.1;
+  // Forms the authors' code has and the paper's text does not (docs/authors-model.md); each
+  // unset is the text's model, bit for bit.
+  /// Perimeter and area stiffness of the large species (unset: K_l, K_a). The code's perimeter
+  /// force carries a species factor (K_l large/small = 1.40), its area term is (ka/2) a0 (a/a0 -
+  /// 1)^2 (K_a = ka/a0 per species).
+  std::optional<double> K_l_large, K_a_large;
+  /// Smooth DP: energy scale of the vertex-vertex contacts at polygon corners (unset: E_c; the
+  /// code: half the edges', 0.5 kint against kint).
+  std::optional<double> E_c_vertex;
+  /// Diameter of a vertex against the walls and the orifice corners, in l0 (unset: the contact
+  /// diameter, dp.contact_width l0 smooth or l0 rough; the code: 1).
+  std::optional<double> wall_width;
+  double K_l_of(int species) const { return species == 1 && K_l_large ? *K_l_large : K_l; }
+  double K_a_of(int species) const { return species == 1 && K_a_large ? *K_a_large : K_a; }
 };
 
 struct SimConfig {

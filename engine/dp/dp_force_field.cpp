@@ -14,10 +14,10 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     : shape_(shape),
       poly_(p),
       list_(c.skin),
-      area_(p, shape, c.dp.K_a),
-      segments_(p, shape, c.dp.K_l),
+      area_(p, shape, {c.dp.K_a_of(0), c.dp.K_a_of(1)}),
+      segments_(p, shape, {c.dp.K_l_of(0), c.dp.K_l_of(1)}),
       bending_(p, shape, c.dp.K_b),
-      walls_(hopper, list_, c.E_w, {shape.delta[0], shape.delta[1]}),
+      walls_(hopper, list_, c.E_w, {shape.wall[0], shape.wall[1]}),
       gravity_(c.gravity),
       drag_(drag_coefficients(c.zeta / shape.n_v, c.drag_rate, {shape.vertex_mass[0], shape.vertex_mass[1]})),
       corners_(hopper, p, shape, c.E_w),
@@ -29,7 +29,8 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     // area. At rest vertices two apart lie beyond both ends of each other's edges, so this acts
     // only on a folding polygon. Not in the paper: docs/validation.md.
     list_.set_groups(&p.owner, &p.first, 1);
-    smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, FrictionLaw{c.mu_normal(), c.mu_tangential()});
+    smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, FrictionLaw{c.mu_normal(), c.mu_tangential()},
+                                                c.dp.E_c_vertex.value_or(E_c));
   } else {
     // Rough: vertex disks of one polygon repel too, except neighbours along the ring (they
     // overlap by construction; the segment term holds them). At rest vertices two apart are
@@ -52,6 +53,8 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
   vertex_reach_.assign(p.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape.l0[1] - reach_covered_));
   list_.set_extra_reach(&vertex_reach_);
+  // a wall contact wider than the pair contact (dp.wall_width): the wall masks reach as far
+  if (c.dp.wall_width) list_.set_wall_diameters({shape.wall[0], shape.wall[1]});
 }
 
 void DpForceField::topology_changed() {

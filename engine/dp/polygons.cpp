@@ -16,6 +16,7 @@ DpShape DpShape::from_config(const SimConfig& c) {
     s.a0[k] = sp.ref_size[k];
     s.l0[k] = std::sqrt(4 * s.a0[k] * nv * t) / nv;  // physics.md 4
     s.delta[k] = s.smooth ? c.dp.contact_width * s.l0[k] : s.l0[k];
+    s.wall[k] = c.dp.wall_width ? *c.dp.wall_width * s.l0[k] : s.delta[k];
     s.vertex_mass[k] = sp.mass[k] / nv;
     s.circumradius[k] = s.l0[k] / (2 * std::sin(units::pi / nv));
   }

@@ -21,13 +21,17 @@ struct DpShape {
   double a0[2]{};           ///< reference area pi sigma^2 / 4
   double l0[2]{};           ///< reference edge length of the regular polygon of area a0
   double delta[2]{};        ///< contact diameter: l0 (rough vertex disks) or dp.contact_width l0 (smooth edges)
+  double wall[2]{};         ///< diameter against walls and orifice corners: dp.wall_width l0, unset: delta
   double vertex_mass[2]{};  ///< M / n_v
   double circumradius[2]{}; ///< of the regular reference polygon
   bool smooth = true;
 
   static DpShape from_config(const SimConfig& c);
-  /// Diameter of the disk that surely contains a reference polygon and its contact shell.
-  double bounding_diameter(int species) const { return 2 * circumradius[species] + delta[species]; }
+  /// Diameter of the disk that surely contains a reference polygon and its contact shells
+  /// (with each other and with the walls).
+  double bounding_diameter(int species) const {
+    return 2 * circumradius[species] + (wall[species] > delta[species] ? wall[species] : delta[species]);
+  }
 };
 
 /// Topology of N polygons (vertex ranges, owners, cyclic neighbours).

@@ -2,6 +2,8 @@
 /// \file dp_area.h
 /// \brief DP area term: U_m = (K_a/2)(a_m - a_m0)^2 with a_m the shoelace area, so
 /// dU/dr_i = K_a (a - a0) (1/2) (y_{i+1} - y_{i-1}, x_{i-1} - x_{i+1}).
+#include <array>
+
 #include "../dp/polygons.h"
 #include "force_term.h"
 
@@ -9,14 +11,16 @@ namespace beverloo {
 
 class DpArea final : public ForceTerm<2> {
  public:
-  DpArea(const PolygonSet& p, const DpShape& shape, double K_a) : p_(p), shape_(shape), k_(K_a) {}
+  /// K_a per species (small, large): a polygon's stiffness is its species'
+  DpArea(const PolygonSet& p, const DpShape& shape, std::array<double, 2> K_a) : p_(p), shape_(shape), k_{K_a[0], K_a[1]} {}
   std::string_view name() const override { return "dp_area"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0;
     for (int m = 0; m < p_.polygons(); ++m) {
-      const double da = polygon_area(p_, s.x, m) - shape_.a0[s.species[p_.first[m]]];
-      energy += 0.5 * k_ * da * da;
-      const double c = -0.5 * k_ * da;  // force = -dU/dr
+      const int species = s.species[p_.first[m]];
+      const double da = polygon_area(p_, s.x, m) - shape_.a0[species];
+      energy += 0.5 * k_[species] * da * da;
+      const double c = -0.5 * k_[species] * da;  // force = -dU/dr
       for (int i = p_.first[m]; i < p_.first[m + 1]; ++i) {
         const Vec<2>& xn = s.x[p_.next[i]];
         const Vec<2>& xp = s.x[p_.prev[i]];
@@ -30,7 +34,7 @@ class DpArea final : public ForceTerm<2> {
  private:
   const PolygonSet& p_;
   const DpShape& shape_;
-  double k_;
+  double k_[2];
 };
 
 }  // namespace beverloo

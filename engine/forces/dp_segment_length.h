@@ -3,6 +3,7 @@
 /// \brief DP perimeter term: U_m = (K_l n_v / 2) sum_i (|l_i| - l_0)^2 over the edges
 /// l_i = r_next(i) - r_i: a harmonic spring of stiffness K_l n_v along each edge.
 /// Also records the longest edge, which bounds the smooth contact's Verlet-list reach.
+#include <array>
 #include <cmath>
 
 #include "../dp/polygons.h"
@@ -12,8 +13,9 @@ namespace beverloo {
 
 class DpSegmentLength final : public ForceTerm<2> {
  public:
-  DpSegmentLength(const PolygonSet& p, const DpShape& shape, double K_l)
-      : p_(p), shape_(shape), k_(K_l * shape.n_v) {}
+  /// K_l per species (small, large): an edge's stiffness is its polygon's
+  DpSegmentLength(const PolygonSet& p, const DpShape& shape, std::array<double, 2> K_l)
+      : p_(p), shape_(shape), k_{K_l[0] * shape.n_v, K_l[1] * shape.n_v} {}
   std::string_view name() const override { return "dp_segment_length"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0, longest = 0;
@@ -22,9 +24,10 @@ class DpSegmentLength final : public ForceTerm<2> {
       const int j = p_.next[i];
       const Vec<2> e = s.x[j] - s.x[i];
       const double len = e.norm();
-      const double stretch = len - shape_.l0[s.species[i]];
-      energy += 0.5 * k_ * stretch * stretch;
-      const Vec<2> fj = (-k_ * stretch / len) * e;  // on the end vertex, toward l0
+      const int species = s.species[i];
+      const double stretch = len - shape_.l0[species];
+      energy += 0.5 * k_[species] * stretch * stretch;
+      const Vec<2> fj = (-k_[species] * stretch / len) * e;  // on the end vertex, toward l0
       f[j] += fj;
       f[i] -= fj;
       longest = len > longest ? len : longest;
@@ -37,7 +40,7 @@ class DpSegmentLength final : public ForceTerm<2> {
  private:
   const PolygonSet& p_;
   const DpShape& shape_;
-  double k_;
+  double k_[2];
   double longest_ = 0;
 };
 

@@ -18,6 +18,7 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
   const double t = q.dot(e) / e2;
   const double dmn = 0.5 * (width_[s.species[a]] + width_[s.species[b]]);
   double d, w_start, w_end;  // distance; lever weights of the edge's start and end vertices
+  double eps = eps_;         // the energy scale: the corner branch's is eps_vertex_
   Vec<2> dir;                // unit vector along which d grows when vertex b moves
   // contact with one end vertex of the edge (a corner, or a fold pair's cap); r = r_b - that end
   auto to_end_vertex = [&](const Vec<2>& r, bool at_start) {
@@ -54,12 +55,13 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     const Vec<2> ep = ra - rp;
     if ((s.x[b] - rp).dot(ep) / ep.squaredNorm() <= 1) return;
     if (!to_end_vertex(q, true)) return;
+    eps = eps_vertex_;
   } else {
     return;  // beyond the end: the next edge's start vertex (its wedge) or its slab; or no corners
   }
   if constexpr (kMode != Mode::FrictionOnly) {
     double law_ov;  // the law's overlap 1 - d * (1/dmn); max_ov keeps its own d / dmn (its bits)
-    const double repulsion = NormalLaw::force(eps_, 1.0 / dmn, d, energy, law_ov);  // -dU/dd
+    const double repulsion = NormalLaw::force(eps, 1.0 / dmn, d, energy, law_ov);  // -dU/dd
     const double ov = 1.0 - d / dmn;
     if (ov > max_ov) {
       max_ov = ov;

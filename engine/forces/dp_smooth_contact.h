@@ -48,9 +48,13 @@ namespace beverloo {
 class DpSmoothContact final : public ForceTerm<2> {
  public:
   /// The smooth model's contact: edges of width shape.delta, with corners and friction.
+  /// E_c_vertex: the energy scale of the corner (vertex-vertex) branch, E_c unless given
+  /// (dp.E_c_vertex; the authors' code: E_c/2)
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c,
-                  FrictionLaw friction)
-      : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, friction, true, "dp_smooth_contact") {}
+                  FrictionLaw friction, double E_c_vertex = -1)
+      : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, friction, true, "dp_smooth_contact") {
+    if (E_c_vertex >= 0) eps_vertex_ = E_c_vertex;
+  }
   /// The rough model's edge core: each edge a circulo-line of width l0/2 (half the vertex
   /// disks'), slabs only (the disks hold the corners), no friction, and energy scale E_c/4 so
   /// that its stiffness per unit overlap, E/width^2, is the disks' (the time step stays the
@@ -115,12 +119,14 @@ class DpSmoothContact final : public ForceTerm<2> {
 
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
                   FrictionLaw friction, bool corners, const char* name)
-      : list_(list), p_(p), width_(width), eps_(E_c), law_(friction), corners_(corners), folds_(corners), name_(name) {}
+      : list_(list), p_(p), width_(width), eps_(E_c), eps_vertex_(E_c), law_(friction), corners_(corners), folds_(corners),
+        name_(name) {}
 
   const NeighborList<2>& list_;
   const PolygonSet& p_;
   std::array<double, 2> width_;  ///< edge (and vertex) contact width per species
   double eps_;
+  double eps_vertex_;  ///< the corner (vertex-vertex) branch's energy scale
   FrictionLaw law_;
   bool corners_;        ///< false: slabs only (the rough core and fold barrier)
   bool pairs_ = true;   ///< edge-vertex pairs from the list (all but the fold barrier)

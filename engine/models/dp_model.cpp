@@ -23,15 +23,16 @@ TimeScales DpModel::time_scales(const SimConfig& c) {
       const double m_red = mv * shape.vertex_mass[b] / (mv + shape.vertex_mass[b]);
       const double delta = 0.5 * (shape.delta[a] + shape.delta[b]);
       const std::string pair = std::string(names[a]) + "-" + names[b];
-      s.oscillation(m_red, HarmonicOverlap::stiffness(c.dp.E_c, delta), "dp.E_c (" + pair + " vertex contact)");
+      s.oscillation(m_red, HarmonicOverlap::stiffness(std::max(c.dp.E_c, c.dp.E_c_vertex.value_or(0)), delta),
+                    "dp.E_c (" + pair + " vertex contact)");
       if (mu_max > 0) s.damping(m_red / mu_max, "mu (kinetic friction, " + pair + " vertices)");
     }
     const std::string who = std::string(names[a]) + " vertex";
-    s.oscillation(mv, HarmonicOverlap::stiffness(c.E_w, 0.5 * shape.delta[a]), "E_w (wall, " + who + ")");
+    s.oscillation(mv, HarmonicOverlap::stiffness(c.E_w, 0.5 * shape.wall[a]), "E_w (wall, " + who + ")");
     // edge spring K_l n_v between two vertices; area: |grad a|^2 ~ l0^2 per vertex;
     // bending: moving one vertex by x turns three edge pairs, curvature 6 K_b/(n_v l0^4)
-    s.oscillation(0.5 * mv, c.dp.K_l * nv, "dp.K_l (segment length, " + who + ")");
-    s.oscillation(mv, c.dp.K_a * l0 * l0, "dp.K_a (area, " + who + ")");
+    s.oscillation(0.5 * mv, c.dp.K_l_of(a) * nv, std::string(a && c.dp.K_l_large ? "dp.K_l_large" : "dp.K_l") + " (segment length, " + who + ")");
+    s.oscillation(mv, c.dp.K_a_of(a) * l0 * l0, std::string(a && c.dp.K_a_large ? "dp.K_a_large" : "dp.K_a") + " (area, " + who + ")");
     if (c.dp.K_b > 0) s.oscillation(mv, 6 * c.dp.K_b / (nv * l0 * l0 * l0 * l0), "dp.K_b (bending, " + who + ")");
     if (c.zeta > 0 || c.drag_rate > 0)
       s.damping(mv / (c.zeta / nv + c.drag_rate * mv), std::string(c.drag_rate > 0 ? "zeta, drag_rate" : "zeta") + " (drag, " + who + ")");

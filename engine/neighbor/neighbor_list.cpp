@@ -182,7 +182,7 @@ void NeighborList<D>::end_row(int i, const ParticleState<D>& s, const Hopper<D>&
   row_end_[i] = static_cast<int>(nbr_.size());
   nbr_.insert(nbr_.end(), kRowSlack, -1);  // room for relocate()
   // walls within reach of this particle until the next build
-  wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * s.sp.sigma[s.species[i]] + skin_, hopper);
+  wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * wall_diameter(s, s.species[i]) + skin_, hopper);
 }
 
 template <int D>
@@ -332,7 +332,7 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
     row_end_[i] = q;
     std::fill(nbr_.begin() + q, nbr_.begin() + q + kRowSlack, -1);
     q += kRowSlack;
-    wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * s.sp.sigma[species[i]] + skin_, hopper);
+    wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * wall_diameter(s, species[i]) + skin_, hopper);
   }
   nbr_.resize(q);
   row_start_[n] = q;
@@ -420,7 +420,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
     *at = other;
     ++row_end_[row];
   }
-  wall_mask_[i] = walls_in_reach(x_ref_[i], 0.5 * s.sp.sigma[si] + skin_, hopper);
+  wall_mask_[i] = walls_in_reach(x_ref_[i], 0.5 * wall_diameter(s, si) + skin_, hopper);
 }
 
 template class NeighborList<2>;

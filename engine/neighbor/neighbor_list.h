@@ -7,6 +7,7 @@
 /// which pair forces are summed depend only on which pairs overlap, not on when the list was
 /// built, so a run resumed from a checkpoint (which rebuilds the list) stays bit-identical.
 /// The same build records, per particle, which walls are within sigma_i/2 + skin.
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -131,6 +132,14 @@ class NeighborList {
   /// extra_j + skin. The smooth DP contact finds an edge from the nearer of its end vertices,
   /// so each vertex reaches half its longest edge further than its contact diameter. The
   /// vector must outlive the list; whoever changes it must invalidate() the list.
+  /// Items of species k feel the walls within diameters[k] / 2 (instead of sigma[k] / 2): the
+  /// wall masks reach that far (plus the skin). DP vertices whose wall contact is wider than
+  /// their pair contact (dp.wall_width).
+  void set_wall_diameters(std::array<double, 2> diameters) {
+    wall_diameters_ = diameters;
+    own_wall_diameters_ = true;
+    force_ = true;
+  }
   void set_extra_reach(const std::vector<double>* extra) {
     extra_ = extra;
     force_ = true;
@@ -224,6 +233,11 @@ class NeighborList {
   const std::vector<int>* first_ = nullptr;
   int exclude_ring_ = -1;
   const std::vector<double>* extra_ = nullptr;
+  std::array<double, 2> wall_diameters_{};
+  bool own_wall_diameters_ = false;
+  double wall_diameter(const ParticleState<D>& s, int species) const {
+    return own_wall_diameters_ ? wall_diameters_[species] : s.sp.sigma[species];
+  }
   double extra(int i) const { return extra_ ? (*extra_)[i] : 0.0; }
   bool force_ = true;
   std::int64_t builds_ = 0;

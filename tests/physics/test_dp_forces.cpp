@@ -106,6 +106,97 @@ double brute_force_smooth_energy(const DpFixture& fx, double eps_c, int edges_of
   return energy;
 }
 
+/// The authors' code's forms (dp.K_l_large, dp.K_a_large, dp.E_c_vertex, dp.wall_width; the
+/// values of docs/authors-model.md): every term still the gradient of its energy.
+SimConfig authors_forms(const std::string& model) {
+  SimConfig c = dp_config(model, 8);
+  c.dp.K_l = 88.3;
+  c.dp.K_l_large = 123.6;
+  c.dp.K_a = 3056;
+  c.dp.K_a_large = 1559;
+  c.dp.K_b = 0.026;
+  c.dp.E_c = 231.5;
+  if (model == "dp_smooth") {
+    c.dp.contact_width = 0.2;
+    c.dp.E_c_vertex = 115.7;
+  }
+  c.dp.wall_width = 1;
+  c.E_w = 11.6;
+  c.resolve_and_validate();
+  return c;
+}
+TEST(DpForces, GradientsSmoothAuthorsForms) {
+  DpFixture fx(authors_forms("dp_smooth"), cluster(), 0.2, 3);
+  check_gradients(fx, 6);
+}
+TEST(DpForces, GradientsRoughAuthorsForms) {
+  DpFixture fx(authors_forms("dp_rough"), cluster(), 0.2, 4);
+  check_gradients(fx, 6);
+}
+
+/// Each form acts where it says and only there: the large species' K_l and K_a scale the
+/// large polygons' shape energies alone; dp.wall_width widens the walls' reach; dp.E_c_vertex
+/// scales the corner (vertex-vertex) contacts alone.
+TEST(DpForces, AuthorsFormsActOnTheirOwnSpeciesAndBranches) {
+  auto shape_energies = [](const SimConfig& c, const DpFixture& fx, const std::string& term_name) {
+    const Hopper<2> h = make_hopper<2>(c);
+    DpFixture copy = fx;
+    copy.c = c;
+    DpForceField ff(c, h, copy.poly, copy.shape, c.dp.E_c);
+    ff.compute(copy.verts);
+    std::array<double, 2> by_species{0, 0};
+    for (ForceTerm<2>* term : ff.terms()) {
+      if (term->name() != term_name) continue;
+      // one polygon at a time: each polygon's energy from a state with it alone deformed
+      for (int m = 0; m < copy.poly.polygons(); ++m) {
+        ParticleState<2> s = fx.verts;
+        for (int k = 0; k < copy.poly.polygons(); ++k)
+          if (k != m)
+            place_regular_polygon(copy.poly, copy.shape, s, k, Vec<2>(-5.0 + k, 9.0), 0.0, Vec<2>::Zero());
+        VecArray<2> f(s.size(), Vec<2>::Zero());
+        by_species[m % 2] += term->accumulate(s, f).energy;
+      }
+    }
+    return by_species;
+  };
+  SimConfig base = dp_config("dp_smooth", 8);
+  base.dp.K_a = 50;  // an area term whose energy is well above rounding
+  base.resolve_and_validate();
+  DpFixture fx(base, cluster(), 0.2, 9);
+  SimConfig large = base;
+  large.dp.K_l_large = 3 * base.dp.K_l;
+  large.dp.K_a_large = 0.5 * base.dp.K_a;
+  for (const auto& [term, factor] : {std::pair<std::string, double>{"dp_segment_length", 3.0}, {"dp_area", 0.5}}) {
+    const auto e0 = shape_energies(base, fx, term), e1 = shape_energies(large, fx, term);
+    ASSERT_GT(e0[0], 0) << term;
+    ASSERT_GT(e0[1], 0) << term;
+    EXPECT_DOUBLE_EQ(e1[0], e0[0]) << term << ": the small species keeps its stiffness";
+    EXPECT_NEAR(e1[1], factor * e0[1], 1e-12 * e0[1]) << term << ": the large species has its own";
+  }
+
+  // a regular small polygon with one vertex 0.3 l0 above the floor: out of reach of a wall
+  // contact as wide as the smooth contact (0.1 l0 / 2), in reach of one l0 wide
+  SimConfig narrow = dp_config("dp_smooth", 2);
+  DpFixture one(narrow, {Vec<2>(-4.0, 3.0), Vec<2>(4.0, 6.0)}, 0.0, 1);  // above the floor, not the orifice
+  const double l0 = one.shape.l0[0];
+  Vec<2> lowest = one.verts.x[0];
+  for (int i = one.poly.first[0]; i < one.poly.first[1]; ++i) lowest = one.verts.x[i][1] < lowest[1] ? one.verts.x[i] : lowest;
+  const Vec<2> shift(0.0, 0.3 * l0 - lowest[1]);
+  for (int i = one.poly.first[0]; i < one.poly.first[1]; ++i) one.verts.x[i] += shift;
+  auto wall_energy = [&](const SimConfig& c) {
+    DpFixture fx1 = one;
+    fx1.c = c;
+    fx1.shape = DpShape::from_config(c);
+    const Hopper<2> h = make_hopper<2>(c);
+    DpForceField ff(c, h, fx1.poly, fx1.shape, c.dp.E_c);
+    return ff.compute(fx1.verts).U_wall;
+  };
+  SimConfig wide = narrow;
+  wide.dp.wall_width = 1;
+  EXPECT_EQ(wall_energy(narrow), 0);
+  EXPECT_GT(wall_energy(wide), 0) << "a vertex 0.3 l0 from the floor is within a wall contact l0 wide";
+}
+
 TEST(DpForces, SmoothContactMatchesBruteForceBothWays) {
   DpFixture fx(dp_config("dp_smooth", 8), cluster(), 0.2, 6);
   const Hopper<2> h = make_hopper<2>(fx.c);

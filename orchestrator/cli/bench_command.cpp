@@ -69,6 +69,39 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
     c.resolve_and_validate();
     return c;
   };
+  // The DP set of the authors' code, corrected (docs/authors-model.md, section 3: kl = 1,
+  // ka = 100, kb = 0.01, kint = 10, cutoff 0.2, vertex wall l0 wide), at the paper's size with
+  // the code's drag (b = 0.1) and reinjection: the job a user plans a DP campaign with.
+  auto authors_dp_1600 = [&](const std::string& model) {
+    SimConfig c;
+    c.model = model;
+    c.N = 1600;
+    c.W = 50;
+    c.w = 6;
+    c.zeta = 0;
+    c.mu = 0;
+    c.drag_rate = 1.95959;
+    c.reinjection.rule = "lanes";
+    c.reinjection.drop_depth_diameters = 2.5;
+    c.dp.K_l = 88.29;
+    c.dp.K_l_large = 123.62;
+    c.dp.K_a = 3055.8;
+    c.dp.K_a_large = 1559.1;
+    c.dp.K_b = 0.02626;
+    c.dp.wall_width = 1;
+    c.E_w = 11.574;
+    if (model == "dp_smooth") {
+      c.dp.E_c = 231.48;
+      c.dp.E_c_vertex = 115.74;
+      c.dp.contact_width = 0.2;
+    } else {
+      c.dp.E_c = 115.74;  // the vertex disks' 0.5 kint (1 - r/l0)^2
+    }
+    c.seed = 1;
+    if (skin > 0) c.skin = skin;
+    c.resolve_and_validate();
+    return c;
+  };
   return {
       {"a", "2D SP N=1600 w=6 E_sp=100 friction only (mu=10 sqrt 10)", base(2, 1600, 0, mu_f), 30,
        std::llround(20000 * scale)},
@@ -82,6 +115,10 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
        std::llround(2000 * scale)},
       {"f", "2D smooth DP as (d) with the authors' contact E_c=115.7 width 0.2 l0, E_w=1e2", authors_dp(), 0.3,
        std::llround(2000 * scale)},
+      {"g", "2D smooth DP N=1600 W=50 the authors' corrected set, drag_rate 1.96, lanes", authors_dp_1600("dp_smooth"),
+       0.3, std::llround(2000 * scale)},
+      {"h", "2D rough DP N=1600 W=50 the authors' corrected set, drag_rate 1.96, lanes", authors_dp_1600("dp_rough"),
+       0.3, std::llround(2000 * scale)},
   };
 }
 
@@ -92,6 +129,8 @@ struct CaseResult {
   int runs = 0;
   std::int64_t steps = 0, points = 0;
   int threads = 1;
+  std::string dt_limit;          ///< the term that sets dt
+  double t0_per_cpu_minute = 0;  ///< t0 of flow one core simulates per minute at the median rate
 };
 
 template <int D>
@@ -120,9 +159,13 @@ CaseResult run_case(const BenchCase& bc, int runs, int threads) {
   CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
                  rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points(),
                  bc.config.is_dp() ? 1 : threads};  // the DP models do not use threads (yet)
+  out.dt_limit = warm.time_step().dt < kDefaultMaxDt ? warm.time_step().period_term : "the largest dt, 1e-3";
+  // steps per second x dt = t0 per second, per core (a DP case runs on one)
+  out.t0_per_cpu_minute = 60 * median / double(out.points) * out.dt / (out.threads > 0 ? out.threads : 1);
   std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s  (%d runs x %lld steps, dt %.3g, %d thread%s)\n",
               out.id.c_str(), out.description.c_str(), out.skin, out.builds_per_kstep, out.median, out.min, out.max,
               out.unit.c_str(), out.runs, static_cast<long long>(out.steps), out.dt, out.threads, out.threads == 1 ? "" : "s");
+  std::fprintf(human, "   dt limited by %s; %.3g t0 of flow per CPU-minute\n", out.dt_limit.c_str(), out.t0_per_cpu_minute);
   std::fflush(human);
   return out;
 }
@@ -130,7 +173,8 @@ CaseResult run_case(const BenchCase& bc, int runs, int threads) {
 nlohmann::json to_json(const CaseResult& r) {
   return {{"id", r.id}, {"description", r.description}, {"unit", r.unit}, {"median", r.median}, {"min", r.min},
           {"max", r.max}, {"runs", r.runs}, {"steps_per_run", r.steps}, {"moving_points", r.points}, {"dt", r.dt},
-          {"skin", r.skin}, {"list_builds_per_1000_steps", r.builds_per_kstep}, {"threads", r.threads}};
+          {"skin", r.skin}, {"list_builds_per_1000_steps", r.builds_per_kstep}, {"threads", r.threads},
+          {"dt_limited_by", r.dt_limit}, {"t0_per_cpu_minute", r.t0_per_cpu_minute}};
 }
 
 /// The medians of an earlier `bench --json` by case id; ConfigError naming the file if unreadable.
@@ -173,7 +217,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("bench", "Standard performance cases: particle-steps per second");
   cmd->add_option("--runs", a->runs, "timed runs per case (median and spread)")->check(CLI::Range(1, 100));
-  cmd->add_option("--case", a->cases, "cases to run (a, b, c, d, e, f; default all)");
+  cmd->add_option("--case", a->cases, "cases to run (a .. h; default all)");
   cmd->add_option("--scale", a->scale, "multiply the timed steps by this")->check(CLI::PositiveNumber);
   cmd->add_option("--skin", a->skin, "Verlet skin (default: the job default)")->check(CLI::PositiveNumber);
   cmd->add_option("--json", a->json_out, "also write the results as JSON to this file (- for stdout)");

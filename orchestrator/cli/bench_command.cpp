@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/cpus.h"
 #include "engine/json_file.h"
+#include "engine/models/authors_dp_set.h"
 #include "engine/models/model_time_step.h"
 #include "engine/protocol/hopper_run.h"
 #include "commands.h"
@@ -83,20 +84,7 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
     c.drag_rate = 1.95959;
     c.reinjection.rule = "lanes";
     c.reinjection.drop_depth_diameters = 2.5;
-    c.dp.K_l = 88.29;
-    c.dp.K_l_large = 123.62;
-    c.dp.K_a = 3055.8;
-    c.dp.K_a_large = 1559.1;
-    c.dp.K_b = 0.02626;
-    c.dp.wall_width = 1;
-    c.E_w = 11.574;
-    if (model == "dp_smooth") {
-      c.dp.E_c = 231.48;
-      c.dp.E_c_vertex = 115.74;
-      c.dp.contact_width = 0.2;
-    } else {
-      c.dp.E_c = 115.74;  // the vertex disks' 0.5 kint (1 - r/l0)^2
-    }
+    use_authors_dp_set(c);
     c.seed = 1;
     if (skin > 0) c.skin = skin;
     c.resolve_and_validate();
@@ -158,7 +146,7 @@ CaseResult run_case(const BenchCase& bc, int runs, int threads) {
   const double median = rates[rates.size() / 2];
   CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
                  rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points(),
-                 bc.config.is_dp() ? 1 : threads};  // the DP models do not use threads (yet)
+                 bc.config.is_dp() ? 1 : threads, "", 0.0};  // the DP models do not use threads (yet)
   out.dt_limit = warm.time_step().dt < kDefaultMaxDt ? warm.time_step().period_term : "the largest dt, 1e-3";
   // steps per second x dt = t0 per second, per core (a DP case runs on one)
   out.t0_per_cpu_minute = 60 * median / double(out.points) * out.dt / (out.threads > 0 ? out.threads : 1);

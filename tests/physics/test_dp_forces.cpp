@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "dp_support.h"
+#include "engine/models/authors_dp_set.h"
 
 namespace beverloo {
 namespace {
@@ -110,18 +111,7 @@ double brute_force_smooth_energy(const DpFixture& fx, double eps_c, int edges_of
 /// values of docs/authors-model.md): every term still the gradient of its energy.
 SimConfig authors_forms(const std::string& model) {
   SimConfig c = dp_config(model, 8);
-  c.dp.K_l = 88.3;
-  c.dp.K_l_large = 123.6;
-  c.dp.K_a = 3056;
-  c.dp.K_a_large = 1559;
-  c.dp.K_b = 0.026;
-  c.dp.E_c = 231.5;
-  if (model == "dp_smooth") {
-    c.dp.contact_width = 0.2;
-    c.dp.E_c_vertex = 115.7;
-  }
-  c.dp.wall_width = 1;
-  c.E_w = 11.6;
+  use_authors_dp_set(c);
   c.resolve_and_validate();
   return c;
 }

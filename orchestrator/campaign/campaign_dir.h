@@ -2,7 +2,7 @@
 /// \file campaign_dir.h
 /// \brief The one place that knows a campaign directory's layout and how it is opened:
 ///
-///     DIR/campaign.sqlite     the store (schema/*.sql, docs/sql-layout.md)
+///     DIR/campaign.sqlite     the store (schema/*.sql, docs/database.md)
 ///     DIR/coordinator.lock    flock of the one process that writes the store
 ///     DIR/jobs/<key16>/       one directory per job (job_files.h, the engine's files)
 ///     DIR/report/             fits, tables and figures (reports/)

@@ -356,7 +356,7 @@ std::int64_t CampaignStore::cancel(std::int64_t campaign) {
 // The states of a job (the jobs table's CHECK); the runs view's status says how a done run ended.
 const char* job_state_meaning(const std::string& state) {
   if (state == "done") return "finished; its result is stored (the runs view's status says how it ended)";
-  if (state == "clogged") return "the flow stopped for good: no exit for run.clog_time (Q = 0, a result)";
+  if (state == "clogged") return "the flow stopped for good: no exit for run.t_clog (Q = 0, a result)";
   if (state == "failed") return "every attempt failed (blow-up, I/O); see the attempts table";
   if (state == "cancelled") return "cancelled by `beverloo campaign cancel`";
   if (state == "running") return "an attempt is in flight";

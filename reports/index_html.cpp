@@ -5,6 +5,7 @@
 
 #include "core/text_escape.h"
 #include "engine/protocol/run_result.h"
+#include "orchestrator/campaign/job_speed.h"
 #include "orchestrator/campaign/store.h"
 #include "reports/number_format.h"
 
@@ -53,6 +54,14 @@ void run_summary(std::ostringstream& html, db::Database& db) {
   t.step();
   html << "</table>\n<p>Engine time: " << format_value(std::round(t.get_double(0)), 6) << " s over " << t.get_int(1)
        << " time steps.</p>\n";
+  const std::vector<ModelSpeed> speed = campaign_speed(db, db.scalar_int("SELECT coalesce(max(id), -1) FROM campaigns"));
+  if (!speed.empty()) {
+    html << "<table><tr><th>model</th><th>jobs</th><th>t0 of flow per CPU-minute of a job: median</th><th>range</th></tr>\n";
+    for (const ModelSpeed& m : speed)
+      html << "<tr><td>" << html_escape(m.model) << "</td><td>" << m.jobs << "</td><td>" << format_value(m.median, 3)
+           << "</td><td>" << format_value(m.min, 3) << " - " << format_value(m.max, 3) << "</td></tr>\n";
+    html << "</table>\n";
+  }
 }
 
 void fit_tables(std::ostringstream& html, const CampaignFits& fits) {

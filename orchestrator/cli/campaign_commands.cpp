@@ -17,6 +17,7 @@
 #include "orchestrator/executors/executor_factory.h"
 #include "engine/protocol/run_result.h"
 #include "orchestrator/campaign/store.h"
+#include "orchestrator/campaign/job_speed.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
 #include "core/text_escape.h"
@@ -125,6 +126,13 @@ int status_command(const std::string& dir) {
   std::string classes;
   while (fails.step()) classes += (classes.empty() ? "" : ", ") + fails.get_text(0) + " " + std::to_string(fails.get_int(1));
   std::printf("failures     %s\n", classes.empty() ? "none" : terminal_safe(classes).c_str());
+  // the unit to plan the rest of a campaign with (docs/cli.md)
+  bool first_speed = true;
+  for (const ModelSpeed& m : campaign_speed(db, id)) {
+    std::printf("%s %s: %.3g t0 per CPU-minute per job (median of %d; %.3g-%.3g)\n", first_speed ? "speed       " : "            ",
+                m.model.c_str(), m.median, m.jobs, m.min, m.max);
+    first_speed = false;
+  }
   if (db.scalar_int("PRAGMA user_version") >= 4 && db.scalar_int("SELECT count(*) FROM slurm_submissions") > 0) {
     // Slurm's view as the coordinator last saw it (attempts.slurm_state), per state
     db::Statement arrays = db.prepare("SELECT count(*), coalesce(sum(array_size), 0) FROM slurm_submissions WHERE state = 'submitted'");

@@ -56,4 +56,17 @@ JSON
 "$BIN" campaign status --dir "$WORK/c" > "$WORK/status"
 grep -q "^  done       finished; its result is stored" "$WORK/status" || fail "status does not explain 'done': $(cat "$WORK/status")"
 grep -qE "^runs ended   2 (converged|time_limit): " "$WORK/status" || fail "status does not explain the endings: $(cat "$WORK/status")"
-echo "ok  campaign status explains its states and endings"
+# and how fast its jobs ran, in t0 per CPU-minute: the same as each job's t_end over its wall time
+line=$(grep -E "^speed        sp 2D: [0-9.e+]+ t0 per CPU-minute per job \(median of 2; " "$WORK/status") \
+  || fail "status does not say how fast the jobs ran: $(cat "$WORK/status")"
+"$BIN" query "$WORK/c" "SELECT json_extract(summary_json, '$.t_end') * 60.0 / wall_seconds FROM results ORDER BY 1" --format csv \
+  | tail -n +2 | python3 -c '
+import re, sys
+v = [float(x) for x in sys.stdin.read().split()]
+m = re.search(r"median of 2; ([0-9.e+]+)-([0-9.e+]+)\)", sys.argv[1])
+lo, hi = float(m.group(1)), float(m.group(2))
+assert abs(lo - v[0]) <= 6e-3 * v[0] and abs(hi - v[1]) <= 6e-3 * v[1], (lo, hi, v)  # 3 digits printed
+' "$line" || fail "the speed line is not the jobs' own t_end / wall time: $line"
+"$BIN" report "$WORK/c" > /dev/null || fail "report failed"
+grep -q "t0 of flow per CPU-minute of a job" "$WORK/c/report/index.html" || fail "the report does not show the jobs' speed"
+echo "ok  campaign status explains its states and endings, and the jobs' speed (also in the report)"

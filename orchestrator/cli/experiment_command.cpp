@@ -1,6 +1,7 @@
 // `beverloo experiment import FILE --dir D` (measured droplet exits into a campaign) and
 // `beverloo experiment export-drain JOB_DIR... -o FILE` (a simulated drain as such a file,
 // labelled simulated): docs/experiments.md.
+#include <algorithm>
 #include <cmath>
 #include <cctype>
 #include <cstdio>
@@ -83,7 +84,15 @@ int export_command(const ExportArgs& a) {
     // a row's first field: only characters that need no quoting in CSV and mean nothing in it
     for (char& c : job)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '_';
-    drains.push_back({name + job.substr(0, 12), d.w, d.exit_time});
+    std::string run = name + job.substr(0, 12);
+    // each run its own name: two jobs whose directories share a start (or one given twice)
+    // would otherwise be one run whose time goes back
+    for (int k = 2; std::any_of(drains.begin(), drains.end(), [&](const auto& o) { return o.run == run; }); ++k)
+      run = name + job.substr(0, 12) + "-" + std::to_string(k);
+    if (static_cast<std::size_t>(d.n_initial) < d.exit_time.size())
+      throw IoError(dir + ": the drain's result has more exits (" + std::to_string(d.exit_time.size()) +
+                    ") than particles (" + std::to_string(d.n_initial) + ")");
+    drains.push_back({run, d.w, d.exit_time, d.n_initial});
     if (!std::isfinite(d.w * a.sigma))
       throw ConfigError("--sigma-m", "the orifice width w = " + std::to_string(d.w) + " in metres is not a finite number");
   }

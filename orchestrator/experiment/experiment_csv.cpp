@@ -44,8 +44,11 @@ const std::set<std::string> kHeaderKeys = {"series", "provenance", "source", "ge
 
 ExperimentFile read_csv(const std::string& path) { return parse_csv_text(read_user_file(path, kMaxCsvBytes), path); }
 
-ExperimentFile parse_csv_text(const std::string& text, const std::string& path) {
-  if (text.size() > kMaxCsvBytes) throw ConfigError(path, too_large(text.size(), kMaxCsvBytes));
+ExperimentFile parse_csv_text(const std::string& text_in, const std::string& path) {
+  if (text_in.size() > kMaxCsvBytes) throw ConfigError(path, too_large(text_in.size(), kMaxCsvBytes));
+  // a spreadsheet's UTF-8 export starts with a byte-order mark: not part of the first line
+  const bool bom = text_in.compare(0, 3, "\xEF\xBB\xBF") == 0;
+  const std::string& text = bom ? text_in.substr(3) : text_in;
   ExperimentFile f;
   f.path = path;
   f.sha256 = sha256_hex(text);
@@ -68,6 +71,14 @@ ExperimentFile parse_csv_text(const std::string& text, const std::string& path) 
     if (t.empty()) continue;
     if (t[0] == '#') {
       const std::string body = trim(t.substr(1));
+      // the format's version: this reader knows version 1; a newer file is refused, not misread
+      if (body.rfind("beverloo-exits", 0) == 0) {
+        const std::string version = trim(body.substr(14));
+        if (version != "1")
+          throw ConfigError(where(""), "format \"beverloo-exits " + version +
+                                           "\" is not one this beverloo reads (it reads beverloo-exits 1)");
+        continue;
+      }
       // "# key: value" with a one-word key is a header line; anything else a comment
       const auto colon = body.find(':');
       if (colon == std::string::npos) continue;

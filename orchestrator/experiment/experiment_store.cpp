@@ -105,9 +105,14 @@ std::string simulated_drains_csv(const std::vector<SimulatedDrain>& drains, cons
   if (!geometry.empty()) o << "# geometry: " << geometry << "\n";
   o << "# sigma_avg_m: " << sigma_avg_m << "\n# g_eff_m_s2: " << g_eff_m_s2 << "\n"
     << "# simulated by beverloo, not measured: exit times in t0 = sqrt(sigma_avg/g_eff) converted to seconds\n"
-    << "run,w_m,t_s\n";
-  for (const SimulatedDrain& d : drains)
-    for (double t : d.exit_time) o << d.run << "," << d.w * sigma_avg_m << "," << t * t0 << "\n";
+    // counts (N after each exit, the run's start first): a drain that ended with particles left
+    // keeps its N0, which an exits-only file would take to be the number of exits
+    << "run,w_m,t_s,N\n";
+  for (const SimulatedDrain& d : drains) {
+    int left = d.n_initial;
+    o << d.run << "," << d.w * sigma_avg_m << "," << 0.0 << "," << left << "\n";
+    for (double t : d.exit_time) o << d.run << "," << d.w * sigma_avg_m << "," << t * t0 << "," << --left << "\n";
+  }
   return o.str();
 }
 

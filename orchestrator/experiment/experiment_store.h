@@ -50,6 +50,7 @@ struct SimulatedDrain {
   std::string run;
   double w = 0;                   ///< sigma_avg
   std::vector<double> exit_time;  ///< t0
+  int n_initial = 0;              ///< particles at the start (more than the exits if some stayed)
 };
 /// The text of a data file holding simulated drains, with the header saying they are simulated.
 std::string simulated_drains_csv(const std::vector<SimulatedDrain>& drains, const std::string& series,

@@ -36,7 +36,7 @@ refuse_export --sigma-m --sigma-m 1e308 --g-eff 0.639
 
 # a bad copy: a time that goes back on line 20; nothing may change in the campaign
 sqlite3 "$WORK/c/campaign.sqlite" .dump > "$WORK/before.sql"
-awk 'NR == 20 {$0 = "w3-x,0.000945,-1"} {print}' "$WORK/sim.csv" > "$WORK/bad.csv"
+awk 'NR == 20 {$0 = "w3-x,0.000945,-1,5"} {print}' "$WORK/sim.csv" > "$WORK/bad.csv"
 set +e; "$BIN" experiment import "$WORK/bad.csv" --dir "$WORK/c" > /dev/null 2> "$WORK/err"; rc=$?; set -e
 [ "$rc" -eq 2 ] || fail "a bad file gave exit $rc, expected 2"
 grep -q "bad.csv:20 column t_s" "$WORK/err" || fail "the message does not name line 20, column t_s: $(cat "$WORK/err")"
@@ -60,6 +60,32 @@ for line in sys.stdin:
     w, qe, qr = map(float, line.split(","))
     assert abs(qe - qr) <= 1e-9 * qr, f"w = {w}: imported Q {qe} differs from the simulated {qr}"
 ' || fail "the imported Q differs from the simulation's"
+# every drain ending round trips: a drain that stopped with particles left (drain.stop_below)
+# keeps its N0; one job given twice, or two jobs at one width, stay two runs; a spreadsheet's
+# byte-order mark is accepted; a newer format is refused, not misread
+cat > "$WORK/left.json" <<'JSON'
+{"dimension": 2, "N": 300, "W": 30, "w": 5, "E_sp": 100, "reinject": false, "zeta": 0.316227766, "mu": 0, "seed": 4,
+ "drain": {"fit_skip": 30, "stop_below": 120}}
+JSON
+"$BIN" simulate "$WORK/left.json" -o "$WORK/left" --progress quiet > /dev/null || fail "the drain with particles left failed"
+"$BIN" experiment export-drain "$WORK/left" "$WORK/left" -o "$WORK/left.csv" --sigma-m 3.15e-4 --g-eff 0.639 --series left \
+  > /dev/null || fail "export-drain of one drain given twice failed"
+printf '\xEF\xBB\xBF' | cat - "$WORK/left.csv" > "$WORK/left_bom.csv"
+"$BIN" experiment import "$WORK/left_bom.csv" --dir "$WORK/c2" --fit-skip 30 > "$WORK/left.log" \
+  || fail "a byte-order mark or a drain given twice was refused: $(cat "$WORK/left.log")"
+grep -q "stored 2 runs (2 fitted)" "$WORK/left.log" || fail "one drain given twice is not two runs: $(cat "$WORK/left.log")"
+python3 - "$WORK/left/summary.json" <<PY || fail "a drain with particles left does not give its own Q back"
+import json, sqlite3, sys
+q = json.load(open(sys.argv[1]))["Q"]
+assert json.load(open(sys.argv[1]))["drain"]["n_remaining"] > 0, "the drain should have stopped with particles left"
+con = sqlite3.connect("$WORK/c2/campaign.sqlite")
+for (qi,) in con.execute("SELECT Q FROM experiment_results"):
+    assert abs(qi - q) <= 1e-9 * q, (qi, q)
+PY
+sed 's/^# beverloo-exits 1$/# beverloo-exits 2/' "$WORK/left.csv" > "$WORK/newer.csv"
+set +e; "$BIN" experiment import "$WORK/newer.csv" --dir "$WORK/c3" > /dev/null 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "beverloo-exits 2" "$WORK/err" || fail "a newer format was not refused: $rc $(cat "$WORK/err")"
+[ ! -e "$WORK/c3" ] || fail "a refused newer format created a campaign"
 "$BIN" fit "$WORK/c" > "$WORK/fit.log" || fail "fit failed"
 grep -q "sim 45/0 (simulated by beverloo, not measured, 45/0)" "$WORK/fit.log" || fail "fit does not show the imported series as simulated"
 "$BIN" report "$WORK/c" > /dev/null || fail "report failed"

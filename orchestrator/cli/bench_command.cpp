@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/cpus.h"
+#include "core/text_escape.h"
 #include "engine/json_file.h"
 #include "engine/models/authors_dp_set.h"
 #include "engine/models/model_time_step.h"
@@ -174,7 +175,11 @@ std::map<std::string, double> read_baseline(const std::string& path) {
   for (const auto& c : j["cases"]) {
     if (!c.is_object() || !c.contains("id") || !c.contains("median") || !c["id"].is_string() || !c["median"].is_number())
       throw ConfigError(path, "a case lacks its \"id\" or \"median\"");
-    medians[c["id"].get<std::string>()] = c["median"].get<double>();
+    const double median = c["median"].get<double>();
+    if (!(median > 0) || !std::isfinite(median))
+      throw ConfigError(path, "case \"" + c["id"].get<std::string>() + "\": median " + c["median"].dump() +
+                                  " is not a rate > 0 (no ratio can be made to it)");
+    medians[c["id"].get<std::string>()] = median;
   }
   return medians;
 }
@@ -218,8 +223,28 @@ void add_bench_command(CLI::App& app, int& exit_status) {
     check_threads("--threads", a->threads);
     const std::map<std::string, double> baseline = a->baseline.empty() ? std::map<std::string, double>{} : read_baseline(a->baseline);
     std::vector<BenchCase> chosen;
-    for (const BenchCase& bc : standard_cases(a->scale, a->skin))
+    const std::vector<BenchCase> all = standard_cases(a->scale, a->skin);
+    std::string ids;
+    for (const BenchCase& bc : all) ids += (ids.empty() ? "" : ", ") + bc.id;
+    for (const std::string& id : a->cases)
+      if (std::none_of(all.begin(), all.end(), [&](const BenchCase& bc) { return bc.id == id; }))
+        throw ConfigError("--case", "\"" + id + "\": no such case (the cases: " + ids + ")");
+    for (const BenchCase& bc : all)
       if (a->cases.empty() || std::find(a->cases.begin(), a->cases.end(), bc.id) != a->cases.end()) chosen.push_back(bc);
+    for (std::size_t k = 0; k < all.size(); ++k)
+      if (all[k].steps < 1 &&
+          (a->cases.empty() || std::find(a->cases.begin(), a->cases.end(), all[k].id) != a->cases.end())) {
+        char scale[32];
+        std::snprintf(scale, sizeof scale, "%g", a->scale);
+        const std::int64_t at_one = standard_cases(1.0, a->skin)[k].steps;
+        throw ConfigError("--scale", std::string(scale) + " leaves case " + all[k].id + " no timed step (" +
+                                         std::to_string(at_one) + " at scale 1: at least " + std::to_string(0.5 / at_one) + ")");
+      }
+    // a baseline without a chosen case: said before the runs, not found missing after them
+    for (const BenchCase& bc : chosen)
+      if (!baseline.empty() && !baseline.count(bc.id))
+        std::fprintf(human, "bench: the baseline %s has no case %s: no ratio for it\n", terminal_safe(a->baseline).c_str(),
+                     bc.id.c_str());
     double estimate = 0;
     for (const BenchCase& bc : chosen) estimate += estimated_seconds(bc, a->runs);
     std::fprintf(human, "bench: %zu case(s) x %d runs; roughly %.0f s on a machine like the one it was written on "
@@ -232,7 +257,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
       const CaseResult r = bc.config.dimension == 2 ? run_case<2>(bc, a->runs, a->threads) : run_case<3>(bc, a->runs, a->threads);
       cases.push_back(to_json(r));
       const auto it = baseline.find(r.id);
-      if (it != baseline.end() && it->second > 0) {
+      if (it != baseline.end()) {
         std::fprintf(human, "   %s: %.3f x the baseline's median (%.3g %s)\n", r.id.c_str(), r.median / it->second, it->second,
                     r.unit.c_str());
         cases.back()["baseline_median"] = it->second;

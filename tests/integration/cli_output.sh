@@ -21,7 +21,19 @@ PY
 echo '{"cases": [{"id": "a"}]}' > "$WORK/bad.json"
 set +e; "$BIN" bench --case a --baseline "$WORK/bad.json" > /dev/null 2> "$WORK/err"; rc=$?; set -e
 [ "$rc" -eq 2 ] && grep -q "bad.json: a case lacks its \"id\" or \"median\"" "$WORK/err" || fail "bad baseline: rc $rc, $(cat "$WORK/err")"
-echo "ok  bench --json, --baseline, a bad baseline refused"
+# what cannot be measured is refused (exit 2, naming the option or file), not printed as 0 or nan
+for args in "--case z" "--case a --scale 1e-9" "--case a --baseline $WORK/zero.json"; do
+  echo '{"cases": [{"id": "a", "median": 0}]}' > "$WORK/zero.json"
+  # shellcheck disable=SC2086
+  set +e; "$BIN" bench $args > "$WORK/out" 2> "$WORK/err"; rc=$?; set -e
+  [ "$rc" -eq 2 ] || fail "bench $args gave exit $rc, expected 2: $(cat "$WORK/out" "$WORK/err")"
+  grep -qE "^beverloo bench: (--case|--scale|$WORK/zero.json)" "$WORK/err" || fail "bench $args does not name what it refused: $(cat "$WORK/err")"
+done
+# a baseline without the case: said before the runs
+echo '{"cases": [{"id": "b", "median": 5e7}]}' > "$WORK/other.json"
+"$BIN" bench --case a --runs 1 --scale 0.01 --baseline "$WORK/other.json" > "$WORK/out" || fail "bench with another case set's baseline failed"
+grep -q "^bench: the baseline .* has no case a: no ratio for it" "$WORK/out" || fail "a baseline without the case is not said: $(cat "$WORK/out")"
+echo "ok  bench --json, --baseline, a bad baseline refused, unknown cases and empty scales refused"
 
 # the progress line (terminal mode: a line every 0.25 s, split at its carriage returns):
 # transient first, then Q with a window that starts before it ends

@@ -23,6 +23,13 @@ int report_campaign(const std::string& dir, const std::string& out) {
     for (const auto& f : figures) made += f.made;
     std::printf("report: %s/index.html (%d of %zu figures; tables beverloo_fits and crossover_fits)\n", terminal_safe(out).c_str(), made,
                 figures.size());
+    // the tables and index.html are made without gnuplot; its figures are not: said, not failed
+    for (const auto& f : figures)
+      if (!f.made && f.why_not.rfind("gnuplot is not installed", 0) == 0) {
+        std::fprintf(stderr, "beverloo report: gnuplot is not installed here: the figures' data and scripts are written, "
+                             "not their images (apt-get install gnuplot-nox, then `beverloo report` again)\n");
+        break;
+      }
     return exit_code::kOk;
   });
 }

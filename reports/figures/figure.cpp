@@ -51,7 +51,15 @@ namespace {
 /// long is stuck (a damaged font cache, a terminal waiting for input).
 constexpr double kGnuplotTimeLimit_s = 120;
 
-void render(Figure& f, const fs::path& dir) {
+/// Whether gnuplot runs here (asked once per process).
+bool gnuplot_available() {
+  static const bool yes = run_child({"gnuplot", "--version"}, kGnuplotTimeLimit_s).rc == 0;
+  return yes;
+}
+
+/// Writes f's data and script and renders them; false (data and script written) if this
+/// machine has no gnuplot.
+bool render(Figure& f, const fs::path& dir) {
   const std::string dat = f.name + ".dat";
   write_text_atomically((dir / dat).string(), f.data.str());
   std::ostringstream gp;
@@ -73,6 +81,7 @@ void render(Figure& f, const fs::path& dir) {
   gp << "set terminal svg size 900,720 dynamic background rgb 'white'\nset output '" << f.name << ".svg'\n" << plot
      << "\nset terminal pngcairo size 900,720\nset output '" << f.name << ".png'\n" << plot << "\nunset output\n";
   write_text_atomically((dir / (f.name + ".gp")).string(), gp.str());
+  if (!gnuplot_available()) return false;
   // no shell: the report directory's path is an argument, never part of a command line
   const ChildResult r = run_child({"gnuplot", f.name + ".gp"}, kGnuplotTimeLimit_s, dir.string());
   if (r.rc != 0 || !fs::exists(dir / (f.name + ".svg")) || !fs::exists(dir / (f.name + ".png"))) {
@@ -82,6 +91,7 @@ void render(Figure& f, const fs::path& dir) {
                   (r.rc == 127 ? " (is gnuplot installed and on PATH?)" : "") + " (see " + log.string() + ")");
   }
   fs::remove(dir / (f.name + ".log"));
+  return true;
 }
 }  // namespace
 
@@ -89,9 +99,11 @@ ReportFigure finish(Figure& f, const fs::path& dir, const std::string& needs) {
   ReportFigure r{f.name, f.title, false, ""};
   if (f.blocks == 0) {
     r.why_not = needs;
-  } else {
-    render(f, dir);
+  } else if (render(f, dir)) {
     r.made = true;
+  } else {
+    r.why_not = "gnuplot is not installed here (apt-get install gnuplot-nox); its data and script are written: run `gnuplot " +
+                f.name + ".gp` in this directory";
   }
   return r;
 }

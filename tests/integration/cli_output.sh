@@ -82,3 +82,14 @@ assert abs(lo - v[0]) <= 6e-3 * v[0] and abs(hi - v[1]) <= 6e-3 * v[1], (lo, hi,
 "$BIN" report "$WORK/c" > /dev/null || fail "report failed"
 grep -q "t0 of flow per CPU-minute of a job" "$WORK/c/report/index.html" || fail "the report does not show the jobs' speed"
 echo "ok  campaign status explains its states and endings, and the jobs' speed (also in the report)"
+
+# without gnuplot the report is still made: index.html, the tables, each figure's data and
+# script, its images said to need gnuplot; exit 0 with a line on stderr
+rm -rf "$WORK/c/report"
+mkdir -p "$WORK/nopath"
+env PATH="$WORK/nopath" "$BIN" report "$WORK/c" > "$WORK/out" 2> "$WORK/err" || fail "report without gnuplot failed: $(cat "$WORK/err")"
+grep -q "gnuplot is not installed here" "$WORK/err" || fail "report without gnuplot does not say so: $(cat "$WORK/err")"
+[ -s "$WORK/c/report/index.html" ] && [ -s "$WORK/c/report/Q_vs_w.gp" ] && [ -s "$WORK/c/report/beverloo_fits.csv" ] \
+  || fail "report without gnuplot did not write index.html, the scripts and the tables"
+grep -q "gnuplot is not installed here" "$WORK/c/report/index.html" || fail "index.html does not say why the figures are missing"
+echo "ok  report without gnuplot: index.html, tables, data and scripts; the images said to need gnuplot"

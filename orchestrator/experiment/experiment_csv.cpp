@@ -188,9 +188,18 @@ Resolved resolve_units(const ExperimentFile& f, const Units& cl) {
   const auto sigma = pick(cl.sigma_avg_m, "sigma_avg_m", "--sigma-m");
   if (!sigma) throw ConfigError(f.path, "no mean droplet diameter: give the header sigma_avg_m or --sigma-m (metres)");
   r.sigma_avg_m = *sigma;
-  const auto g_eff = pick(cl.g_eff_m_s2, "g_eff_m_s2", "--g-eff");
-  const auto rho_d = pick(cl.rho_drop_kg_m3, "rho_drop_kg_m3", "--rho-drop");
-  const auto rho_m = pick(cl.rho_medium_kg_m3, "rho_medium_kg_m3", "--rho-medium");
+  // The command line overrides the header, the effective gravity as a whole: --g-eff on the line
+  // sets aside the header's densities, a density on the line the header's g_eff. Only one
+  // source giving both ways is a contradiction.
+  const bool line_g_eff = cl.g_eff_m_s2.has_value(), line_rho = cl.rho_drop_kg_m3 || cl.rho_medium_kg_m3;
+  if (line_g_eff && line_rho)
+    throw ConfigError("--g-eff", "give either --g-eff or the two densities (--rho-drop, --rho-medium), not both");
+  std::optional<double> g_eff, rho_d, rho_m;
+  if (!line_rho) g_eff = pick(cl.g_eff_m_s2, "g_eff_m_s2", "--g-eff");
+  if (!line_g_eff) {
+    rho_d = pick(cl.rho_drop_kg_m3, "rho_drop_kg_m3", "--rho-drop");
+    rho_m = pick(cl.rho_medium_kg_m3, "rho_medium_kg_m3", "--rho-medium");
+  }
   const auto g = pick(cl.g_m_s2, "g_m_s2", "--g");
   if (g_eff && (rho_d || rho_m))
     throw ConfigError(f.path, "give either g_eff or the two densities, not both (g_eff = g |rho_medium - rho_drop| / rho_drop)");

@@ -92,6 +92,30 @@ TEST(ExperimentFile, ImportFitsEachRunAndConvertsToTheUnitsOfThePaper) {
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM experiment_fit_results"), 1);
 }
 
+TEST(ExperimentFile, TheCommandLinesGravityOverridesTheHeaders) {
+  // docs/experiments.md: the command line overrides the header, the effective gravity as a
+  // whole (the header here gives the two densities)
+  TempDir d;
+  const std::string path = d.write("a.csv", std::string(kHeader) + "run,w_m,t_s\n" + law_rows("r1", 9e-4, 500, 20));
+  ImportOptions o;
+  o.units.g_eff_m_s2 = 0.5;
+  EXPECT_NEAR(prepare_import(path, o).units.g_eff_m_s2, 0.5, 1e-15);
+  o.units = {};
+  o.units.rho_drop_kg_m3 = 900;  // one density on the line, the other from the header
+  EXPECT_NEAR(prepare_import(path, o).units.g_eff_m_s2, 9.80665 * 97 / 900, 1e-12);
+  // both ways on the line is a contradiction, named by the option
+  o.units.g_eff_m_s2 = 0.5;
+  try {
+    (void)prepare_import(path, o);
+    FAIL() << "--g-eff with --rho-drop was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.field(), "--g-eff");
+  }
+  // and in the file alone, too
+  const std::string both = d.write("b.csv", std::string(kHeader) + "# g_eff_m_s2: 0.5\nrun,w_m,t_s\n" + law_rows("r1", 9e-4, 500, 20));
+  EXPECT_NE(error_of(both).find("not both"), std::string::npos) << error_of(both);
+}
+
 TEST(ExperimentFile, CountsGiveTheSameExitsAsExitTimes) {
   TempDir d;
   // N after each time: 5 at 0, then 4, 4 (no change), 2 (two at once), 0

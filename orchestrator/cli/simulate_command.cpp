@@ -1,6 +1,8 @@
 // `beverloo simulate JOB.json [-o DIR] [--resume] [--overwrite] [--json]`: one engine run, no database.
 #include <cstdio>
 #include <filesystem>
+
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <iostream>
 
@@ -15,6 +17,7 @@
 #include "core/failures.h"
 #include "core/stop_signal.h"
 #include "core/text_escape.h"
+#include "core/user_file.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -79,6 +82,22 @@ int run_simulate(const SimulateArgs& a) {
         fs::remove(fs::path(dir) / name);
     }
     if (a.resume) {
+      // a directory of another job (its job.json, written when that run began, differs) is the
+      // wrong directory: refused, also when it holds only that job's checkpoint
+      const fs::path job_file = fs::path(dir) / "job.json";
+      if (fs::exists(checkpoint) && fs::exists(job_file)) {
+        nlohmann::json theirs;
+        try {
+          theirs = nlohmann::json::parse(read_user_file(job_file.string(), 1 << 20));
+        } catch (const std::exception&) {
+          theirs = nullptr;  // unreadable: the checkpoint's own check decides (set aside if it is not this job's)
+        }
+        if (!theirs.is_null() && theirs != c.to_json()) {
+          std::fprintf(stderr, "beverloo simulate: %s holds another job's run (its job.json differs); use another -o, or "
+                               "--overwrite without --resume to start this job there\n", terminal_safe(dir).c_str());
+          return exit_code::kConfig;
+        }
+      }
       const job_output::ResultCheck done = job_output::check_result(dir, c);
       if (done.state == job_output::ResultState::OtherJob) {
         std::fprintf(stderr, "beverloo simulate: %s\n", terminal_safe(done.reason).c_str());

@@ -39,6 +39,14 @@ done
 # a run that was killed leaves no result (one whose kill came too late finished: its result is
 # checked against the clean run below like any other)
 [ "$last_kill_hit" -eq 0 ] || [ ! -f "$WORK/killed/result.h5" ] || fail "a killed run left a result"
+# --resume of another job over this one's checkpoint: refused (exit 2), the directory unchanged
+sed 's/"w": 5,/"w": 4,/; s/"w": 3,/"w": 4,/' "$WORK/job.json" > "$WORK/other.json"
+cmp -s "$WORK/job.json" "$WORK/other.json" && fail "the other job is the same job"
+before=$(cat "$WORK/killed"/* | sha256sum)
+set +e; "$BIN" simulate "$WORK/other.json" -o "$WORK/killed" --resume --progress quiet > /dev/null 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -qE "another job's run|result of a different job" "$WORK/err" \
+  || fail "--resume of another job gave exit $rc: $(cat "$WORK/err")"
+[ "$before" = "$(cat "$WORK/killed"/* | sha256sum)" ] || fail "a refused --resume of another job changed the directory"
 "$BIN" simulate "$WORK/job.json" -o "$WORK/killed" --resume --progress quiet > /dev/null
 resumed=$(h5dump -a /run/resumed_times "$WORK/killed/result.h5" | grep -o '(0): [0-9]*' | grep -o '[0-9]*$')
 [ "$resumed" -ge 1 ] || fail "the final run did not resume from a checkpoint"

@@ -1,10 +1,13 @@
 #include "config.h"
 
 #include <cmath>
+#include <cstdio>
 #include <set>
+#include <tuple>
 
 #include "parameters.h"
 #include "rng.h"
+#include "units.h"
 
 namespace beverloo {
 namespace {
@@ -15,6 +18,16 @@ void require(bool ok, const std::string& field, const std::string& reason) {
   if (!ok) throw ConfigError(field, reason);
 }
 std::string num(double x) { return json(x).dump(); }
+
+/// x with 4 significant digits, for messages.
+std::string short_num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", x);
+  return b;
+}
+
+/// The tallest funnel wall (sigma_avg) a 2D container may have.
+constexpr double kMaxFunnelHeight = 1e4;
 
 }  // namespace
 
@@ -234,6 +247,25 @@ void SimConfig::resolve_and_validate() {
   }
   require(theta_w_left_deg > 0 || theta_w_right_deg > 0, "theta_w_deg",
           "at most one funnel wall may be vertical (0 degrees); both are 0, which leaves no floor");
+  // a funnel wall almost vertical but not quite rises (W - w)/2 / tan(theta) (all of W - w when
+  // the other wall is vertical): beyond kMaxFunnelHeight the container is no longer one the
+  // neighbour list's grid and the placement can hold; 0 is the vertical wall
+  if (dimension == 2)
+    for (const auto& [field, theta, other] : {std::tuple{"theta_w_left_deg", theta_w_left_deg, theta_w_right_deg},
+                                              std::tuple{"theta_w_right_deg", theta_w_right_deg, theta_w_left_deg}}) {
+      if (!(theta > 0 && theta < 90)) continue;
+      const double run = other == 0 ? W - w : 0.5 * (W - w);
+      const double rad = theta * units::pi / 180, height = run * std::cos(rad) / std::sin(rad);
+      require(height <= kMaxFunnelHeight, field,
+              short_num(theta) + " degrees makes the funnel wall rise " + short_num(height) + " sigma_avg; at most " +
+                  short_num(kMaxFunnelHeight) + " (a vertical wall is 0 degrees)");
+    }
+  // the container must hold a particle: W above the large particles' diameter
+  {
+    const double sigma_large = 2 * size_ratio / (1 + size_ratio);
+    require(W > sigma_large, "W", short_num(W) + " is narrower than a large particle (diameter " + short_num(sigma_large) +
+                                      " sigma_avg): no particle fits the container");
+  }
   if (dimension == 3)
     require(theta_w_left_deg == 90 && theta_w_right_deg == 90, "theta_w_deg",
             "the 3D hopper has a flat base only (90 degrees), got " + num(theta_w_left_deg));

@@ -34,6 +34,20 @@ TimeStepChoice choose_time_step(const std::optional<double>& explicit_dt, const 
   if (!explicit_dt) {
     t.automatic = true;
     t.dt = std::min({kDefaultMaxDt, t.period_min / kAutoPeriodFraction, t.tau_min / kAutoDampingFraction});
+    if (!(t.dt >= kSmallestDt)) {
+      // a stiffness or a drag the engine cannot resolve in any run a machine finishes: refused
+      // before anything is allocated, naming the parameter that sets it (the term's last one)
+      const bool stiff = t.period_min / kAutoPeriodFraction <= t.tau_min / kAutoDampingFraction;
+      const std::string term = stiff ? t.period_term : t.tau_term;
+      std::string field = term.substr(0, term.find(" ("));
+      if (field.rfind(", ") != std::string::npos) field = field.substr(field.rfind(", ") + 2);
+      std::ostringstream msg;
+      msg.precision(3);
+      msg << "makes " << (stiff ? "the oscillation period " : "the damping time ") << (stiff ? t.period_min : t.tau_min)
+          << " t0 (" << term << "), so dt \"auto\" would be " << t.dt << " t0; at least " << kSmallestDt
+          << " t0 can be run (10^7 steps per t0)";
+      throw ConfigError(field, msg.str());
+    }
     return t;
   }
   t.automatic = false;

@@ -49,6 +49,9 @@ inline constexpr double kDefaultMaxDt = 1e-3;   ///< the paper's dt, the upper b
 inline constexpr double kAutoPeriodFraction = 15;
 inline constexpr double kRefusePeriodFraction = 6;
 inline constexpr double kAutoDampingFraction = 5;
+/// The smallest dt "auto" may choose (t0): below it a job takes more than 10^7 steps per t0 of
+/// flow (days for one t0 of a large system), so its parameters are refused as beyond the engine.
+inline constexpr double kSmallestDt = 1e-7;
 
 /// The step for a model's time scales: automatic when explicit_dt is empty, else explicit_dt
 /// checked; throws ConfigError("dt", ...) if an explicit dt is too large for the stiffest term.

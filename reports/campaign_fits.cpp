@@ -161,16 +161,18 @@ CampaignFits fit_campaign(db::Database& db) {
           ++p.clogged;
           continue;
         }
-        if (Q > 0 && err > 0) {
+        if (Q > 0 && err > 0 && std::isfinite(Q) && std::isfinite(err)) {
           sw += 1 / (err * err);
           swq += Q / (err * err);
+        } else {
+          ++s.left_out;  // a rate without an error cannot be weighted: not a 0 +- 0 point
         }
       }
       if (sw > 0) {
         p.Q = swq / sw;
         p.Q_err = 1 / std::sqrt(sw);
       }
-      s.points.push_back(p);
+      if (sw > 0 || p.clogged > 0) s.points.push_back(p);
     }
     std::vector<double> w, Q, e;
     for (const auto& p : s.points)

@@ -43,11 +43,21 @@ void add_report_commands(CLI::App& app, int& exit_status) {
       CampaignWriter writer(*dir, CampaignWriter::Open::MustExist);
       db::Database& db = writer.db();
       const CampaignFits fits = fit_campaign(db);
+      if (fits.series.empty()) {
+        std::printf("fit: nothing to fit in %s: no job has a stored result and no series was imported "
+                    "(`beverloo campaign status --dir %s` shows where the jobs are)\n",
+                    terminal_safe(*dir).c_str(), terminal_safe(*dir).c_str());
+        return exit_code::kOk;
+      }
       store_fits(db, fits);
       const std::string out = campaign_dir::report_path(*dir);
       write_fit_tables(fits, out);
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
+      for (const Series& s : fits.series)
+        if (s.left_out > 0)
+          std::printf("\n%s: %d replica(s) with a flow rate but no usable error (Q_err not > 0) left out of the fit\n",
+                      terminal_safe(s.label).c_str(), s.left_out);
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits) and %s/*.csv, *.md\n",
                   terminal_safe(*dir).c_str(), terminal_safe(out).c_str());
       return exit_code::kOk;

@@ -9,6 +9,7 @@
 
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/db/migrations.h"
+#include "reports/campaign_fits.h"
 #include "reports/fit.h"
 #include "reports/report.h"
 
@@ -67,6 +68,42 @@ fs::path make_fixture(const double lambda_c, const double b) {
     store.ingest_success(*job, summary.dump(), h, v, e);
   }
   return dir;
+}
+
+TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
+  const fs::path dir = fs::temp_directory_path() / ("beverloo-report-" + new_token());
+  fs::create_directories(dir / "jobs");
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
+  db::open_store(db);
+  CampaignStore store(db);
+  const json sweep = {{"name", "errs"}, {"base", {{"N", 400}, {"W", 25}, {"zeta", 0.3}, {"mu", 0}}},
+                      {"sweep", {{"w", {4, 5, 6, 7, 8}}}}};
+  const Sweep s = Sweep::parse(sweep, "errs");
+  const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
+  while (auto job = store.claim_next(id, "local", "test")) {
+    const double w = json::parse(job->job_json)["w"];
+    const double Q = beverloo_model(w, 0.4, 1.0, 0.5);
+    // w = 6: a rate with an error of 0, w = 7: a negative error; neither can be weighted
+    const double err = w == 6 ? 0.0 : (w == 7 ? -0.01 : 0.02 * Q);
+    const json summary = {{"status", "converged"}, {"Q", Q}, {"Q_err", err}, {"Q_rel_err", err / Q},
+                          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
+                          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
+                          {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
+                          {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
+                          {"particle_steps_per_second", 3e7}};
+    store.ingest_success(*job, summary.dump(), {}, {}, {});
+  }
+  const CampaignFits fits = fit_campaign(db);
+  ASSERT_EQ(fits.series.size(), 1u);
+  const Series& series = fits.series[0];
+  EXPECT_EQ(series.left_out, 2);
+  ASSERT_EQ(series.points.size(), 3u);
+  for (const auto& p : series.points) {
+    EXPECT_TRUE(p.flowing()) << "w = " << p.w << ": Q = " << p.Q << " +- " << p.Q_err;
+    EXPECT_NE(p.w, 6.0);
+    EXPECT_NE(p.w, 7.0);
+  }
+  fs::remove_all(dir);
 }
 
 TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {

@@ -434,6 +434,21 @@ std::vector<JobSpec> Sweep::expand() const {
     try {
       spec.config = SimConfig::from_json(job);
       (void)choose_time_step(spec.config);  // an explicit dt the stiffest term cannot take
+      // lambda means (zeta + drag_rate M(sigma_avg)) / mu_t (job-file.md) in every job: an axis
+      // whose zeta and mu a fixed mu_t or drag_rate overrides would label jobs with a lambda
+      // they do not have (all of one lambda with mu_t fixed): refused, not stored
+      if (spec.lambda) {
+        const std::optional<double> actual = derived::lambda(spec.config);
+        const double want = *spec.lambda;
+        const bool same = actual && (std::isinf(want) ? std::isinf(*actual)
+                                                      : std::fabs(*actual - want) <= 1e-12 * std::max(1.0, want));
+        if (!same)
+          throw SweepError(p["lambda"].path,
+                           show(p["lambda"].value) + ": the job's own lambda = (zeta + drag_rate M) / mu_t is " +
+                               (actual ? (std::isinf(*actual) ? std::string("inf") : show(json(*actual))) : std::string("undefined")) +
+                               " (mu_t, mu_n or drag_rate fixed beside the lambda axis override the zeta and mu it sets);"
+                               " set zeta, mu_t and drag_rate directly (e.g. through \"derived\") instead");
+      }
     } catch (const ConfigError& e) {
       const std::string field = e.field();
       std::string path = "base." + field, value;

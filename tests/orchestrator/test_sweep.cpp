@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "engine/parameters.h"
 #include "orchestrator/sweep/sweep.h"
 
 namespace beverloo {
@@ -84,6 +85,43 @@ TEST(Sweep, LambdaLimitsAndDissipationScaleFollowPhysicsSpec) {
   EXPECT_DOUBLE_EQ(jobs[4].config.zeta, 10 * z);                // scale 10 multiplies both
   EXPECT_DOUBLE_EQ(jobs[4].config.mu, 10 * z / 0.01);
   EXPECT_TRUE(std::isinf(*jobs[2].lambda));
+}
+
+TEST(Sweep, EveryJobsLambdaIsTheDefinitionOfItsOwnParameters) {
+  // lambda = (zeta + drag_rate M(sigma_avg)) / mu_t for every job, however the sweep sets it
+  const json b = {{"N", 50}, {"W", 12}, {"w", 4}};
+  const std::string base_text = R"("base": {"N": 50, "W": 12, "w": 4})";
+  std::vector<json> ways;
+  for (const char* rest : {R"("sweep": {"lambda": [0, 0.01, 0.5, "inf"]})",
+                           R"("sweep": {"product": [{"dissipation_scale": [0.1, 10]}, {"lambda": [0.02, 3]}]})",
+                           R"("sweep": {"product": [{"zeta": [0.1, 1]}, {"mu": [0, 2]}]})",
+                           R"("derived": {"mu_t": "1 / lambda", "mu": "1 / lambda", "zeta": "0 * lambda + 1"}, "sweep": {"lambda": [0.5, 2]})",
+                           R"("sweep": {"product": [{"drag_rate": [0, 1.96]}, {"zeta": [0]}, {"mu": [1]}, {"mu_n": [0]}]})"})
+    ways.push_back(json::parse("{" + base_text + ", " + rest + "}"));
+  int checked = 0;
+  for (const json& sweep : ways)
+    for (const JobSpec& j : expand(sweep)) {
+      const std::optional<double> definition = derived::lambda(j.config);
+      ASSERT_TRUE(definition.has_value()) << j.job.dump();
+      if (j.lambda) {  // the axis' value is the job's
+        if (std::isinf(*j.lambda)) EXPECT_TRUE(std::isinf(*definition)) << j.job.dump();
+        else EXPECT_NEAR(*definition, *j.lambda, 1e-12 * std::max(1.0, *j.lambda)) << j.job.dump();
+      }
+      ++checked;
+    }
+  EXPECT_EQ(checked, 16);
+  // a lambda axis that fixed mu_t or drag_rate would override is refused at the axis, not
+  // stored as a lambda the jobs do not have
+  for (const json& fixed : {json{{"mu_t", 8.5}, {"mu_n", 0}}, json{{"drag_rate", 1.96}}}) {
+    json bb = b;
+    bb.update(fixed);
+    try {
+      (void)expand({{"base", bb}, {"sweep", {{"lambda", {0.01, 0.1}}}}});
+      FAIL() << "a lambda axis beside " << fixed.dump() << " was accepted";
+    } catch (const SweepError& e) {
+      EXPECT_NE(std::string(e.what()).find("sweep.lambda[0]"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Sweep, DerivedParametersAndWhereFilters) {

@@ -260,6 +260,28 @@ void SimConfig::resolve_and_validate() {
               short_num(theta) + " degrees makes the funnel wall rise " + short_num(height) + " sigma_avg; at most " +
                   short_num(kMaxFunnelHeight) + " (a vertical wall is 0 degrees)");
     }
+  // A setting that cannot change a result must not change a job's key or seed: the draining
+  // hopper's fit and stop on a continuous flow, the reinjection's choice on a drain (which
+  // reinjects nothing; its drop depth still says when a particle is taken out) are refused,
+  // as DP options on an SP job are
+  {
+    const SimConfig d;
+    if (reinject) {
+      require(drain.stop_below == d.drain.stop_below, "drain.stop_below",
+              "applies to a draining hopper (reinject = false) only: a continuous flow does not stop on it");
+      require(drain.fit_skip == d.drain.fit_skip, "drain.fit_skip",
+              "applies to a draining hopper (reinject = false) only: a continuous flow has no drain fit");
+      require(drain.block_exits == d.drain.block_exits, "drain.block_exits",
+              "applies to a draining hopper (reinject = false) only: a continuous flow has no drain fit");
+    } else {
+      require(reinjection.rule == d.reinjection.rule, "reinjection.rule",
+              "a draining hopper (reinject = false) reinjects nothing: the rule would change no result");
+      require(reinjection.top_band == d.reinjection.top_band, "reinjection.top_band",
+              "a draining hopper (reinject = false) reinjects nothing: the band would change no result");
+      require(reinjection.max_attempts == d.reinjection.max_attempts, "reinjection.max_attempts",
+              "a draining hopper (reinject = false) reinjects nothing: the attempts would change no result");
+    }
+  }
   // the container must hold a particle: W above the large particles' diameter
   {
     const double sigma_large = 2 * size_ratio / (1 + size_ratio);

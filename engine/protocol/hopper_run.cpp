@@ -50,7 +50,8 @@ HopperRun<D>::HopperRun(const SimConfig& c, RunOptions options)
       reinjector_(hopper_, c.reinjection, c.N),
       obs_(c),
       estimator_(c.run),
-      pile_finder_(c.N) {
+      pile_finder_(c.N),
+      governor_(opt_.adapt_threads ? opt_.threads : 1) {
   make_fresh_model();
   body_drag_ = drag_coefficients(c_.zeta, c_.drag_rate, Species::bidisperse(D, c_.size_ratio).mass);
   rec_.exit_time.reserve(1 << 16);
@@ -65,7 +66,7 @@ HopperRun<D>::~HopperRun() = default;
 template <int D>
 void HopperRun<D>::make_fresh_model() {
   model_ = make_model<D>(c_, hopper_);
-  model_->set_threads(opt_.threads);
+  model_->set_threads(governor_.active() ? governor_.threads() : opt_.threads);
   exits_.set_lateral_slack(model_->lateral_slack());
   if (auto test = model_->spot_test()) reinjector_.set_extra_test(std::move(test));
 }
@@ -214,6 +215,8 @@ void HopperRun<D>::step_once() {
   step_t_next_ = (s_.step + 1) * ts_.dt;
   if (!c_.reinject) session_particle_steps_ += s_.size();
   const StepReport r = model_->step(s_, ts_.dt, *this);
+  // the same bits on every thread count: the count may follow the node's load between steps
+  if (governor_.after_step()) model_->set_threads(governor_.threads());
   model_->check_step(r, time(), c_.max_overlap);
   rec_.max_overlap_seen = std::max(rec_.max_overlap_seen, r.forces.max_overlap);
 }

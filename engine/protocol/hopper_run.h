@@ -17,6 +17,7 @@
 #include "../dp/dp_system.h"
 #include "../forces/force_field.h"
 #include "../models/hopper_model.h"
+#include "thread_governor.h"
 #include "../geometry/hopper.h"
 #include "../models/model_time_step.h"
 #include "../rng.h"
@@ -49,6 +50,9 @@ struct RunOptions {
   /// yet). Every count gives the same result, bit for bit: the forces are summed in an order
   /// that the particle count alone fixes (neighbor_list.h, blocks).
   int threads = 1;
+  /// With threads > 1: use 1 thread instead while that runs the steps faster (a node whose
+  /// other cores are busy; thread_governor.h). Off: always `threads` (bench, to time them).
+  bool adapt_threads = true;
 };
 
 template <int D>
@@ -123,6 +127,7 @@ class HopperRun : private StepHook<D> {
   /// drag coefficient of a whole particle (DP: polygon) per species, for the |F^zeta| observable
   std::array<double, 2> body_drag_{};
   PileFinder<D> pile_finder_;
+  ThreadGovernor governor_{1};  ///< the thread count now (thread_governor.h)
   std::vector<std::uint8_t> in_pile_;
   std::int64_t fire_iterations_ = 0;
   double fire_max_force_ = 0;

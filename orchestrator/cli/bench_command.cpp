@@ -126,6 +126,7 @@ template <int D>
 CaseResult run_case(const BenchCase& bc, int runs, int threads) {
   RunOptions options;
   options.threads = threads;
+  options.adapt_threads = false;  // the bench times the count it was given
   HopperRun<D> warm(bc.config, options);
   warm.prepare();
   warm.advance(std::llround(bc.warmup_time / warm.time_step().dt));

@@ -18,7 +18,7 @@ constexpr std::array<FailureInfo, 13> kTable = {{
     {F::Cancelled, "cancelled", -1, "cancelled", R::Cancel},
     {F::Preempted, "preempted", -1, "interrupted", R::Free},
     {F::NodeFailure, "node_failure", -1, "lost", R::Free},
-    {F::OutOfMemory, "out_of_memory", -1, "failed", R::Budgeted},
+    {F::OutOfMemory, "out_of_memory", exit_code::kOutOfMemory, "failed", R::Budgeted},
     {F::Stalled, "stalled", -1, "lost", R::Free},
 }};
 }  // namespace

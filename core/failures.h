@@ -19,6 +19,7 @@ inline constexpr int kIo = 4;           ///< reading or writing files failed
 inline constexpr int kInterrupted = 5;  ///< stopped by SIGINT/SIGTERM/SIGUSR1 after writing a checkpoint
 inline constexpr int kBusy = 6;         ///< another coordinator holds the campaign
 inline constexpr int kJobsFailed = 7;   ///< the campaign finished, but some jobs failed for good
+inline constexpr int kOutOfMemory = 8;  ///< an allocation failed (the machine's memory or the process's limit)
 inline constexpr int kLockBusy = 75;    ///< a worker found its job locked by another live worker
 }  // namespace exit_code
 

@@ -1,5 +1,7 @@
 #include "memory_estimate.h"
 
+#include <sys/resource.h>
+
 #include <unistd.h>
 
 #include <cmath>
@@ -38,6 +40,17 @@ std::uint64_t available_memory_bytes() {
       }
     }
   }
+  // the process's own address-space limit (ulimit -v, Slurm's --mem by some setups), less what
+  // the process already maps (the binary, its libraries, the heap so far)
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    std::uint64_t mapped = 0;
+    std::ifstream statm("/proc/self/statm");
+    std::uint64_t pages_mapped = 0;
+    if (statm >> pages_mapped && page > 0) mapped = pages_mapped * std::uint64_t(page);
+    const std::uint64_t left = as.rlim_cur > mapped ? std::uint64_t(as.rlim_cur) - mapped : 0;
+    if (left < bytes) bytes = left;
+  }
   return bytes;
 }
 
@@ -46,8 +59,8 @@ void check_memory(const SimConfig& c) {
   if (need <= have) return;
   char msg[256];
   std::snprintf(msg, sizeof msg,
-                "%d %s need about %.1f GiB, more than the %.1f GiB this machine offers; lower N (or run it on a "
-                "larger node)",
+                "%d %s need about %.1f GiB, more than the %.1f GiB this process may use (the machine's memory, a cgroup's "
+                "memory.max, ulimit -v); lower N (or run it on a larger node)",
                 c.N, c.is_dp() ? "polygons" : "particles", double(need) / (1ull << 30), double(have) / (1ull << 30));
   throw ConfigError("N", msg);
 }

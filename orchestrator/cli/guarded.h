@@ -2,6 +2,7 @@
 /// \file guarded.h
 /// \brief How every campaign-level command ends: each kind of error becomes its message on
 /// stderr ("beverloo CMD: ...") and its exit code (docs/cli.md), never an exception.
+#include <new>
 #include <cstdio>
 #include <filesystem>
 
@@ -40,6 +41,10 @@ inline int guarded(const char* cmd, F&& body) {
   } catch (const std::filesystem::filesystem_error& e) {  // a name too long, a loop of links, a file for a directory
     std::fprintf(stderr, "beverloo %s: I/O error: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kIo;
+  } catch (const std::bad_alloc&) {  // never an abort: the limit is the machine's or the process's
+    std::fprintf(stderr, "beverloo %s: out of memory: an allocation failed (the machine's memory, or this process's limit: "
+                         "ulimit -v, a cgroup's memory.max, Slurm's --mem); nothing more was written\n", cmd);
+    return exit_code::kOutOfMemory;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "beverloo %s: internal error: %s\n", cmd, terminal_safe(e.what()).c_str());
     return exit_code::kInternal;

@@ -157,6 +157,10 @@ int run_simulate(const SimulateArgs& a) {
     return fail(FailureClass::BlowUp, "unstable run", terminal_safe(e.what()).c_str());
   } catch (const IoError& e) {
     return fail(FailureClass::Io, "I/O error", terminal_safe(e.what()).c_str());
+  } catch (const std::bad_alloc&) {
+    return fail(FailureClass::OutOfMemory, "out of memory",
+                "an allocation failed (the machine's memory, or this process's limit: ulimit -v, a cgroup's memory.max, "
+                "Slurm's --mem)");
   }
 }
 

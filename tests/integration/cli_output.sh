@@ -93,3 +93,17 @@ grep -q "gnuplot is not installed here" "$WORK/err" || fail "report without gnup
   || fail "report without gnuplot did not write index.html, the scripts and the tables"
 grep -q "gnuplot is not installed here" "$WORK/c/report/index.html" || fail "index.html does not say why the figures are missing"
 echo "ok  report without gnuplot: index.html, tables, data and scripts; the images said to need gnuplot"
+
+# the process's own limits: a job beyond its address-space limit is refused before it runs
+# (exit 2, the limit named); an allocation that fails anyway ends with exit 8, never an abort
+echo '{"dimension": 2, "N": 50000000, "w": 6, "W": 3000, "zeta": 0.3, "mu": 0}' > "$WORK/big.json"
+set +e; (ulimit -v 2097152; "$BIN" simulate "$WORK/big.json" -o "$WORK/big" > /dev/null 2> "$WORK/err"); rc=$?; set -e
+[ "$rc" -eq 2 ] && grep -q "this process may use" "$WORK/err" || fail "a job beyond ulimit -v gave exit $rc: $(cat "$WORK/err")"
+[ ! -e "$WORK/big" ] || fail "a refused job wrote $WORK/big"
+set +e
+(ulimit -v 400000; "$BIN" query "$WORK/c" "WITH RECURSIVE r(x) AS (SELECT 1 UNION ALL SELECT x + 1 FROM r LIMIT 20000000)
+  SELECT x, printf('%0100d', x) FROM r" --max-rows 100000000 > /dev/null 2> "$WORK/err"); rc=$?
+set -e
+[ "$rc" -eq 8 ] && grep -q "out of memory" "$WORK/err" || fail "a query beyond ulimit -v gave exit $rc: $(cat "$WORK/err")"
+echo "ok  the process's memory limit: a job refused before it runs, a query ends with exit 8"
+

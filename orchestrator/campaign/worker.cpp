@@ -1,5 +1,6 @@
 #include "worker.h"
 
+#include <new>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -143,6 +144,8 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
     return finish(FailureClass::BlowUp, e.what());
   } catch (const IoError& e) {
     return finish(FailureClass::Io, e.what());
+  } catch (const std::bad_alloc&) {  // the node's memory or the job's limit: a budgeted retry, not a bug
+    return finish(FailureClass::OutOfMemory, "an allocation failed (the node's memory, or the job's limit)");
   } catch (const std::exception& e) {
     return finish(FailureClass::Internal, e.what());
   }

@@ -30,16 +30,25 @@ void commit_atomically(const std::string& tmp_path, const std::string& path) {
   fsync_path(dir.empty() ? "." : dir.string(), true);
 }
 
+PendingFile::~PendingFile() {
+  if (!committed_) ::unlink(tmp_.c_str());  // nothing to say if it is already gone
+}
+
+void PendingFile::commit() {
+  commit_atomically(tmp_, target_);
+  committed_ = true;
+}
+
 void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
+  PendingFile file(path);
   {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError("cannot write " + tmp);
+    std::ofstream out(file.path(), std::ios::binary | std::ios::trunc);
+    if (!out) throw IoError("cannot write " + file.path());
     out << text;
     out.flush();
-    if (!out) throw IoError("write failed: " + tmp);
+    if (!out) throw IoError("write failed: " + file.path() + " (a full disk?)");
   }
-  commit_atomically(tmp, path);
+  file.commit();
 }
 
 }  // namespace beverloo

@@ -12,9 +12,9 @@ namespace beverloo {
 
 template <int D>
 void HopperRun<D>::save_checkpoint(const std::string& target) const {
-  const std::string tmp = target + ".tmp";
+  PendingFile file(target);  // removed if anything below fails (a full disk)
   {
-    H5Handle f = h5::create_file(tmp);
+    H5Handle f = h5::create_file(file.path());
     h5::attr(f, "format", std::string("beverloo-checkpoint"));
     h5::attr(f, "format_version", std::int64_t{2});  // 2: particle ids, the model's lists
     h5::attr(f, "engine_version", std::string(BEVERLOO_VERSION));
@@ -48,7 +48,7 @@ void HopperRun<D>::save_checkpoint(const std::string& target) const {
     h5::write(o, "block_profile", obs_.block_profile);
     H5Fflush(f, H5F_SCOPE_GLOBAL);
   }
-  commit_atomically(tmp, target);
+  file.commit();
 }
 
 template <int D>

@@ -8,9 +8,9 @@
 namespace beverloo {
 
 void write_result_file(const std::string& path, const SimConfig& c, const RunResult& r) {
-  const std::string tmp = path + ".tmp";
+  PendingFile file(path);  // removed if anything below fails (a full disk)
   {
-    H5Handle f = h5::create_file(tmp);
+    H5Handle f = h5::create_file(file.path());
     h5::attr(f, "format", std::string("beverloo-result"));
     h5::attr(f, "format_version", std::int64_t{1});
     h5::attr(f, "engine_version", std::string(BEVERLOO_VERSION));
@@ -120,7 +120,7 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
     }
     H5Fflush(f, H5F_SCOPE_GLOBAL);
   }
-  commit_atomically(tmp, path);
+  file.commit();
 }
 
 }  // namespace beverloo

@@ -266,21 +266,19 @@ void SimConfig::resolve_and_validate() {
   // as DP options on an SP job are
   {
     const SimConfig d;
-    if (reinject) {
-      require(drain.stop_below == d.drain.stop_below, "drain.stop_below",
-              "applies to a draining hopper (reinject = false) only: a continuous flow does not stop on it");
-      require(drain.fit_skip == d.drain.fit_skip, "drain.fit_skip",
-              "applies to a draining hopper (reinject = false) only: a continuous flow has no drain fit");
-      require(drain.block_exits == d.drain.block_exits, "drain.block_exits",
-              "applies to a draining hopper (reinject = false) only: a continuous flow has no drain fit");
-    } else {
-      require(reinjection.rule == d.reinjection.rule, "reinjection.rule",
-              "a draining hopper (reinject = false) reinjects nothing: the rule would change no result");
-      require(reinjection.top_band == d.reinjection.top_band, "reinjection.top_band",
-              "a draining hopper (reinject = false) reinjects nothing: the band would change no result");
-      require(reinjection.max_attempts == d.reinjection.max_attempts, "reinjection.max_attempts",
-              "a draining hopper (reinject = false) reinjects nothing: the attempts would change no result");
-    }
+    const std::tuple<const char*, bool, bool> unused[] = {
+        // field, at its default, whether it can matter (a drain's fit and stop; a flow's reinjection)
+        {"drain.stop_below", drain.stop_below == d.drain.stop_below, !reinject},
+        {"drain.fit_skip", drain.fit_skip == d.drain.fit_skip, !reinject},
+        {"drain.block_exits", drain.block_exits == d.drain.block_exits, !reinject},
+        {"reinjection.rule", reinjection.rule == d.reinjection.rule, reinject},
+        {"reinjection.top_band", reinjection.top_band == d.reinjection.top_band, reinject},
+        {"reinjection.max_attempts", reinjection.max_attempts == d.reinjection.max_attempts, reinject},
+    };
+    for (const auto& [field, at_default, matters] : unused)
+      require(at_default || matters, field,
+              reinject ? "applies to a draining hopper (reinject = false) only: a continuous flow's result does not depend on it"
+                       : "a draining hopper (reinject = false) reinjects nothing: it would change no result");
   }
   // the container must hold a particle: W above the large particles' diameter
   {

@@ -30,7 +30,7 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     // only on a folding polygon. Not in the paper: docs/validation.md.
     list_.set_groups(&p.owner, &p.first, 1);
     smooth_ = std::make_unique<DpSmoothContact>(list_, p, shape, E_c, FrictionLaw{c.mu_normal(), c.mu_tangential()},
-                                                c.dp.E_c_vertex.value_or(E_c));
+                                                c.dp.E_c_vertex);
   } else {
     // Rough: vertex disks of one polygon repel too, except neighbours along the ring (they
     // overlap by construction; the segment term holds them). At rest vertices two apart are

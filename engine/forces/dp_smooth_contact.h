@@ -35,6 +35,7 @@
 /// same with a and b swapped; so every edge-vertex pair is counted exactly once, and a
 /// stretched edge widens the search only around its own vertices.
 #include <array>
+#include <optional>
 #include <utility>
 
 #include "../dp/polygons.h"
@@ -51,9 +52,9 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// E_c_vertex: the energy scale of the corner (vertex-vertex) branch, E_c unless given
   /// (dp.E_c_vertex; the authors' code: E_c/2)
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c,
-                  FrictionLaw friction, double E_c_vertex = -1)
+                  FrictionLaw friction, std::optional<double> E_c_vertex = std::nullopt)
       : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, friction, true, "dp_smooth_contact") {
-    if (E_c_vertex >= 0) eps_vertex_ = E_c_vertex;
+    eps_vertex_ = E_c_vertex.value_or(E_c);
   }
   /// The rough model's edge core: each edge a circulo-line of width l0/2 (half the vertex
   /// disks'), slabs only (the disks hold the corners), no friction, and energy scale E_c/4 so

@@ -10,7 +10,14 @@ cat > "$WORK/sweep.json" <<'J'
 J
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/c" --workers 2 --heartbeat 0.2 --progress log 2> "$WORK/log" &
 coord=$!
-sleep 1.2
+# stop it once a worker's heartbeat is recorded (a fixed 1.2 s was not always enough on a
+# loaded machine: the test then failed on the machine's speed, not on the coordinator)
+for _ in $(seq 150); do
+  beats=$(sqlite3 "$WORK/c/campaign.sqlite" "SELECT count(*) FROM attempts WHERE heartbeat_at IS NOT NULL" 2> /dev/null || echo 0)
+  [ "${beats:-0}" -ge 1 ] && break
+  sleep 0.1
+done
+sleep 0.3
 kill -TERM "$coord"
 set +e; wait "$coord"; rc=$?; set -e
 [ "$rc" -eq 5 ] || fail "coordinator exit $rc after SIGTERM, expected 5: $(tail -3 "$WORK/log")"

@@ -53,6 +53,7 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
   vertex_reach_.assign(p.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape.l0[1] - reach_covered_));
   list_.set_extra_reach(&vertex_reach_);
+  corner_edges_.reserve(p.vertices());
   // a wall contact wider than the pair contact (dp.wall_width): the wall masks reach as far
   if (c.dp.wall_width) list_.set_wall_diameters({shape.wall[0], shape.wall[1]});
 }
@@ -66,10 +67,10 @@ void DpForceField::topology_changed() {
 ForceReport DpForceField::compute(ParticleState<2>& s) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
-  r.U_shape = area_.accumulate(s, s.f).energy + segments_.accumulate(s, s.f).energy + bending_.accumulate(s, s.f).energy;
+  r.U_shape = shape_pass(s);
   // The list must reach every edge of this very step: soft segments (K_l ~ 1) stretch edges to
   // several l0, and a list that does not follow misses contacts and lets vertices through edges.
-  update_edge_bounds(s);
+  if (edge_outgrown_) reset_edge_bounds(s);
   list_.update(s, hopper_);
   if (smooth_) {
     const TermOutput o = smooth_->accumulate(s, s.f);
@@ -83,20 +84,41 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.max_overlap = std::max({rough_->max_overlap(), rough_core_->max_overlap(), rough_fold_->max_overlap()});
   }
   r.U_wall = walls_.accumulate(s, s.f).energy;
-  r.U_wall += corners_.accumulate(s, s.f).energy;
+  r.U_wall += corners_.accumulate_edges(s, s.f, corner_edges_).energy;
   r.U_gravity = gravity_.accumulate(s, s.f).energy;
   r.P_drag = drag_.accumulate(s, s.f).power;
   return r;
 }
 
-bool DpForceField::update_edge_bounds(const ParticleState<2>& s) {
-  const int n = poly_.vertices();
+double DpForceField::shape_pass(ParticleState<2>& s) {
+  // Each vertex's force takes contributions of its own polygon's shape terms only, so polygon
+  // by polygon (area, then segments, then bending within each) it sums the same numbers in the
+  // same order as the three terms one after another over all polygons: the same bits, with
+  // one pass over the positions and one square root per edge instead of two
+  // (tests/physics/test_dp_forces.cpp, FusedShapePassEqualsTheTermsOneAfterAnother).
+  double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
   bool outgrown = false;
-  for (int i = 0; i < n && !outgrown; ++i)
-    outgrown = (s.x[poly_.next[i]] - s.x[i]).squaredNorm() > edge_bound_[i] * edge_bound_[i];
-  if (!outgrown) return false;
-  // Reset every bound (not only the outgrown one), so that bounds also shrink back after a
-  // stretched polygon relaxes; this happens rarely, and it costs one list rebuild.
+  corner_edges_.clear();
+  for (int m = 0; m < poly_.polygons(); ++m) {
+    edges_.measure(poly_, s.x, m);
+    area_.add_polygon(s, s.f, m, U_area);
+    segments_.add_polygon(s, s.f, edges_, U_length, longest);
+    bending_.add_polygon(s, s.f, edges_, U_bending);
+    for (int i = edges_.first, k = 0; i < poly_.first[m + 1]; ++i, ++k) {
+      const double e2 = edges_.e[k].squaredNorm();
+      outgrown = outgrown || e2 > edge_bound_[i] * edge_bound_[i];
+      if (corners_.may_touch(s, i, e2)) corner_edges_.push_back(i);  // capacity reserved: no allocation
+    }
+  }
+  segments_.set_longest_edge(longest);
+  edge_outgrown_ = outgrown;
+  return U_area + U_length + U_bending;
+}
+
+void DpForceField::reset_edge_bounds(const ParticleState<2>& s) {
+  // Every bound (not only the outgrown one), so that bounds also shrink back after a stretched
+  // polygon relaxes; this happens rarely, and it costs one list rebuild.
+  const int n = poly_.vertices();
   for (int i = 0; i < n; ++i) {
     const double len = (s.x[poly_.next[i]] - s.x[i]).norm();
     edge_bound_[i] = std::max(kEdgeBoundGrowth * len, kEdgeBoundFloor * shape_.l0[s.species[i]]);
@@ -104,7 +126,6 @@ bool DpForceField::update_edge_bounds(const ParticleState<2>& s) {
   for (int i = 0; i < n; ++i)
     vertex_reach_[i] = std::max(0.0, 0.5 * std::max(edge_bound_[i], edge_bound_[poly_.prev[i]]) - reach_covered_);
   list_.invalidate();
-  return true;
 }
 
 void DpForceField::set_dissipation(bool on) {

@@ -63,8 +63,12 @@ class DpForceField {
   void topology_changed();
 
  private:
-  /// True (and the list invalidated) if some edge outgrew its bound.
-  bool update_edge_bounds(const ParticleState<2>& s);
+  /// The shape terms (area, segment length, bending) polygon by polygon over edges measured
+  /// once; on the way, whether an edge outgrew its bound and which edges may touch an orifice
+  /// corner (corner_edges_). Returns their energy, each term's sum in its own order.
+  double shape_pass(ParticleState<2>& s);
+  /// Every edge's bound set again from its length, and the list invalidated (an edge outgrew its bound).
+  void reset_edge_bounds(const ParticleState<2>& s);
 
   const DpShape& shape_;
   const PolygonSet& poly_;
@@ -84,6 +88,9 @@ class DpForceField {
   Drag<2> drag_;
   DpWallCorners corners_;
   const Hopper<2>& hopper_;
+  PolygonEdges edges_;            ///< the polygon at hand in shape_pass
+  bool edge_outgrown_ = false;    ///< set by shape_pass
+  std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing
 };
 
 }  // namespace beverloo

@@ -7,47 +7,60 @@
 #include <cmath>
 
 #include "../dp/polygons.h"
+#include "dp_polygon_edges.h"
 #include "force_term.h"
 
 namespace beverloo {
 
 class DpBending final : public ForceTerm<2> {
  public:
-  DpBending(const PolygonSet& p, const DpShape& shape, double K_b) : p_(p), shape_(shape), k_(K_b) {
-    unit_.resize(p.vertices());
-    inv_len_.resize(p.vertices());
+  DpBending(const PolygonSet& p, const DpShape& shape, double K_b) : p_(p), k_(K_b) {
+    // C = K_b / (2 n_v l0^2) per species, made once (a division per vertex was a tenth of the term)
+    for (int k = 0; k < 2; ++k) c_of_[k] = k_ / (2.0 * shape.n_v * shape.l0[k] * shape.l0[k]);
   }
   std::string_view name() const override { return "dp_bending"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
-    if (k_ == 0) return {};
-    const int nv = p_.vertices();
-    for (int i = 0; i < nv; ++i) {
-      const Vec<2> e = s.x[p_.next[i]] - s.x[i];
-      inv_len_[i] = 1.0 / e.norm();
-      unit_[i] = e * inv_len_[i];
-    }
-    // C = K_b / (2 n_v l0^2) per species, made once (a division per vertex was a tenth of the term)
-    double c_of[2];
-    for (int k = 0; k < 2; ++k) c_of[k] = k_ / (2.0 * shape_.n_v * shape_.l0[k] * shape_.l0[k]);
     double energy = 0;
-    for (int i = 0; i < nv; ++i) {
-      const double c = c_of[s.species[i]];
-      const Vec<2>& u = unit_[i];
-      energy += c * (u - unit_[p_.next[i]]).squaredNorm();
-      const Vec<2> g = (2 * c) * (2 * u - unit_[p_.next[i]] - unit_[p_.prev[i]]);
-      const Vec<2> dU_de = (g - g.dot(u) * u) * inv_len_[i];
+    for (int m = 0; k_ != 0 && m < p_.polygons(); ++m) {
+      edges_.measure(p_, s.x, m);
+      add_polygon(s, f, edges_, energy);
+    }
+    return {energy, 0};
+  }
+  /// The measured polygon's part: its forces into f, its energy onto `energy`. See
+  /// DpArea::add_polygon for why per polygon.
+  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, const PolygonEdges& edges, double& energy) {
+    if (k_ == 0) return;
+    const int first = edges.first, n = p_.first[p_.owner[first] + 1] - first;
+    if (static_cast<int>(unit_.size()) < n) {  // only for a polygon larger than any before
+      unit_.resize(n);
+      inv_len_.resize(n);
+    }
+    for (int k = 0; k < n; ++k) {
+      inv_len_[k] = 1.0 / edges.len[k];
+      unit_[k] = edges.e[k] * inv_len_[k];
+    }
+    for (int k = 0; k < n; ++k) {
+      const int i = first + k;
+      const double c = c_of_[s.species[i]];
+      const Vec<2>& u = unit_[k];
+      const Vec<2>& u_next = unit_[p_.next[i] - first];
+      const Vec<2>& u_prev = unit_[p_.prev[i] - first];
+      energy += c * (u - u_next).squaredNorm();
+      const Vec<2> g = (2 * c) * (2 * u - u_next - u_prev);
+      const Vec<2> dU_de = (g - g.dot(u) * u) * inv_len_[k];
       f[p_.next[i]] -= dU_de;
       f[i] += dU_de;
     }
-    return {energy, 0};
   }
 
  private:
   const PolygonSet& p_;
-  const DpShape& shape_;
   double k_;
-  VecArray<2> unit_;
-  std::vector<double> inv_len_;
+  double c_of_[2];
+  VecArray<2> unit_;             ///< per edge of the polygon at hand
+  std::vector<double> inv_len_;  ///< per edge of the polygon at hand
+  PolygonEdges edges_;           ///< accumulate()'s own scratch
 };
 
 }  // namespace beverloo

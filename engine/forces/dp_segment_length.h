@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "../dp/polygons.h"
+#include "dp_polygon_edges.h"
 #include "force_term.h"
 
 namespace beverloo {
@@ -19,11 +20,22 @@ class DpSegmentLength final : public ForceTerm<2> {
   std::string_view name() const override { return "dp_segment_length"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0, longest = 0;
-    const int nv = p_.vertices();
-    for (int i = 0; i < nv; ++i) {
-      const int j = p_.next[i];
-      const Vec<2> e = s.x[j] - s.x[i];
-      const double len = e.norm();
+    for (int m = 0; m < p_.polygons(); ++m) {
+      edges_.measure(p_, s.x, m);
+      add_polygon(s, f, edges_, energy, longest);
+    }
+    longest_ = longest;
+    return {energy, 0};
+  }
+  /// The measured polygon's part: its forces into f, its energy onto `energy`, its longest edge
+  /// into `longest` (a running maximum). See DpArea::add_polygon for why per polygon.
+  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, const PolygonEdges& edges, double& energy,
+                   double& longest) const {
+    const int first = edges.first, n = p_.first[p_.owner[first] + 1] - first;
+    for (int k = 0; k < n; ++k) {
+      const int i = first + k, j = p_.next[i];
+      const Vec<2>& e = edges.e[k];
+      const double len = edges.len[k];
       const int species = s.species[i];
       const double stretch = len - shape_.l0[species];
       energy += 0.5 * k_[species] * stretch * stretch;
@@ -32,16 +44,17 @@ class DpSegmentLength final : public ForceTerm<2> {
       f[i] -= fj;
       longest = len > longest ? len : longest;
     }
-    longest_ = longest;
-    return {energy, 0};
   }
   double longest_edge() const { return longest_; }
+  /// For a pass over the polygons that calls add_polygon itself.
+  void set_longest_edge(double longest) { longest_ = longest; }
 
  private:
   const PolygonSet& p_;
   const DpShape& shape_;
   double k_[2];
   double longest_ = 0;
+  PolygonEdges edges_;  ///< accumulate()'s own scratch
 };
 
 }  // namespace beverloo

@@ -14,6 +14,7 @@
 /// opens one (seen: K_l = 1), and this thin core only acts once the corner is that deep.
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "../dp/polygons.h"
 #include "../geometry/hopper.h"
@@ -33,30 +34,24 @@ class DpWallCorners final : public ForceTerm<2> {
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0;
     const int nv = p_.vertices();
-    for (int i = 0; i < nv; ++i) {
-      const int j = p_.next[i];
-      const Vec<2> e = s.x[j] - s.x[i];
-      const double e2 = e.squaredNorm();
-      const double half_delta = 0.05 * shape_.l0[s.species[i]];
-      for (const Vec<2>& c : corners_) {
-        const Vec<2> q = c - s.x[i];
-        // in the slab (0 <= t <= 1) and within half_delta of the line: |q|^2 <= |e|^2 + half_delta^2,
-        // whatever the edge's length (soft edges stretch to several l0)
-        if (q.squaredNorm() >= e2 + half_delta * half_delta) continue;
-        const double t = q.dot(e) / e2;
-        if (t < 0 || t > 1) continue;  // beyond the ends: the vertices' own wall contact
-        const double len = std::sqrt(e2);
-        const Vec<2> n(e[1] / len, -e[0] / len);  // outward normal
-        const double d = q.dot(n);                 // corner outside the polygon: d > 0
-        if (d >= half_delta || d <= -half_delta) continue;
-        double dU_dd;
-        energy += HarmonicOverlap::energy(eps_, d, 1.0 / half_delta, dU_dd);
-        // dd/dr_i = -(1 - t) n, dd/dr_j = -t n (the corner is fixed)
-        f[i] += (dU_dd * (1 - t)) * n;
-        f[j] += (dU_dd * t) * n;
-      }
-    }
+    for (int i = 0; i < nv; ++i) edge_against_corners(s, f, i, energy);
     return {energy, 0};
+  }
+  /// The same for the listed edges only (by their start vertex, increasing): DpForceField lists
+  /// those for which may_touch() holds while it measures the edges for the shape terms, so the
+  /// edges far from the orifice cost nothing here; the sum is accumulate()'s, bit for bit.
+  TermOutput accumulate_edges(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>& edges) const {
+    double energy = 0;
+    for (const int i : edges) edge_against_corners(s, f, i, energy);
+    return {energy, 0};
+  }
+  /// False if the edge from vertex i (squared length e2) is surely out of both corners' reach:
+  /// a corner in its slab within half_delta of its line is within sqrt(|e|^2 + half_delta^2) of r_i.
+  bool may_touch(const ParticleState<2>& s, int i, double e2) const {
+    const double half_delta = half_width(s.species[i]);
+    for (const Vec<2>& c : corners_)
+      if ((c - s.x[i]).squaredNorm() < e2 + half_delta * half_delta) return true;
+    return false;
   }
 
  private:
@@ -64,6 +59,31 @@ class DpWallCorners final : public ForceTerm<2> {
   const DpShape& shape_;
   double eps_;
   std::array<Vec<2>, 2> corners_;
+
+  double half_width(int species) const { return 0.05 * shape_.l0[species]; }
+  void edge_against_corners(const ParticleState<2>& s, VecArray<2>& f, int i, double& energy) const {
+    const int j = p_.next[i];
+    const Vec<2> e = s.x[j] - s.x[i];
+    const double e2 = e.squaredNorm();
+    const double half_delta = half_width(s.species[i]);
+    for (const Vec<2>& c : corners_) {
+      const Vec<2> q = c - s.x[i];
+      // in the slab (0 <= t <= 1) and within half_delta of the line: |q|^2 <= |e|^2 + half_delta^2,
+      // whatever the edge's length (soft edges stretch to several l0)
+      if (q.squaredNorm() >= e2 + half_delta * half_delta) continue;
+      const double t = q.dot(e) / e2;
+      if (t < 0 || t > 1) continue;  // beyond the ends: the vertices' own wall contact
+      const double len = std::sqrt(e2);
+      const Vec<2> n(e[1] / len, -e[0] / len);  // outward normal
+      const double d = q.dot(n);                 // corner outside the polygon: d > 0
+      if (d >= half_delta || d <= -half_delta) continue;
+      double dU_dd;
+      energy += HarmonicOverlap::energy(eps_, d, 1.0 / half_delta, dU_dd);
+      // dd/dr_i = -(1 - t) n, dd/dr_j = -t n (the corner is fixed)
+      f[i] += (dU_dd * (1 - t)) * n;
+      f[j] += (dU_dd * t) * n;
+    }
+  }
 };
 
 }  // namespace beverloo

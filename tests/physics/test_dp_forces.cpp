@@ -533,5 +533,47 @@ TEST(DpForces, ShapeEnergiesAreInvariantUnderRigidMotionAndZeroForReferencePolyg
   EXPECT_NEAR(polygon_area(regular.poly, regular.verts.x, 1), regular.shape.a0[1], 1e-12);
 }
 
+// DpForceField::compute runs the shape terms polygon by polygon over edges measured once and
+// the orifice corners only on the edges near them; each vertex must still sum the same numbers
+// in the same order as the terms one after another, so the forces and energies are equal bit
+// for bit (the results of every DP job rest on this).
+TEST(DpForces, FusedShapePassEqualsTheTermsOneAfterAnother) {
+  for (const char* model : {"dp_smooth", "dp_rough"}) {
+    SimConfig c = dp_config(model, int(cluster().size()) + 1, 0.4, 1.5);
+    use_authors_dp_set(c);
+    c.resolve_and_validate();
+    std::vector<Vec<2>> centres = cluster();
+    centres.push_back({1.5, 0.6});  // moved onto the orifice corner below
+    DpFixture fx(c, centres, 0.2, 17);
+    const int m = fx.poly.polygons() - 1, a = fx.poly.first[m], b = fx.poly.next[a];
+    const Vec<2> e = fx.verts.x[b] - fx.verts.x[a];
+    const Vec<2> outward = Vec<2>(e[1], -e[0]).normalized();
+    const Vec<2> shift = Vec<2>(0.5 * c.w, 0) - 0.5 * (fx.verts.x[a] + fx.verts.x[b]) - 0.02 * fx.shape.l0[1] * outward;
+    for (int i = fx.poly.first[m]; i < fx.poly.first[m + 1]; ++i) fx.verts.x[i] += shift;
+    Rng rng(5);
+    for (auto& v : fx.verts.v) v = Vec<2>(rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const Hopper<2> h = make_hopper<2>(fx.c);
+    DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+    ParticleState<2> fused = fx.verts;
+    const ForceReport r = ff.compute(fused);
+    // the same terms one after another, in compute()'s order (terms(): area, segments, bending,
+    // contact, walls, gravity, drag, corners, then the rough model's core and fold barrier)
+    const std::vector<ForceTerm<2>*> t = ff.terms();
+    std::vector<int> order = {0, 1, 2, 3};
+    if (t.size() > 8) order.insert(order.end(), {8, 9});
+    order.insert(order.end(), {4, 7, 5, 6});
+    VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+    std::vector<double> energy(t.size());
+    for (int k : order) energy[k] = t[k]->accumulate(fx.verts, f).energy;
+    EXPECT_GT(energy[7], 0) << model << ": the corner term must act in this test";
+    for (int i = 0; i < fx.verts.size(); ++i) {
+      ASSERT_EQ(f[i][0], fused.f[i][0]) << model << " vertex " << i;
+      ASSERT_EQ(f[i][1], fused.f[i][1]) << model << " vertex " << i;
+    }
+    EXPECT_EQ(r.U_shape, energy[0] + energy[1] + energy[2]) << model;
+    EXPECT_EQ(r.U_wall, energy[4] + energy[7]) << model;
+  }
+}
+
 }  // namespace
 }  // namespace beverloo

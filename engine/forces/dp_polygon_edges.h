@@ -1,0 +1,34 @@
+#pragma once
+/// \file dp_polygon_edges.h
+/// \brief The edge vectors and lengths of one polygon, measured once per force evaluation and
+/// shared by the shape terms that need them (segment length, bending): DpForceField's pass over
+/// the polygons takes one square root per edge where the terms alone take one each.
+#include <vector>
+
+#include "../dp/polygons.h"
+#include "../vec.h"
+
+namespace beverloo {
+
+struct PolygonEdges {
+  int first = 0;            ///< the polygon's first vertex; edge k runs from vertex first + k to its next
+  VecArray<2> e;            ///< edge vectors r_next(i) - r_i
+  std::vector<double> len;  ///< |e_k|, computed as Eigen's norm() (the terms' own expression, so their bits)
+
+  /// Measures polygon m. Allocates only when a polygon has more vertices than any before.
+  void measure(const PolygonSet& p, const VecArray<2>& x, int m) {
+    first = p.first[m];
+    const int n = p.first[m + 1] - first;
+    if (static_cast<int>(e.size()) < n) {
+      e.resize(n);
+      len.resize(n);
+    }
+    for (int k = 0; k < n; ++k) {
+      const int i = first + k;
+      e[k] = x[p.next[i]] - x[i];
+      len[k] = e[k].norm();
+    }
+  }
+};
+
+}  // namespace beverloo

@@ -104,11 +104,18 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
     area_.add_polygon(s, s.f, m, U_area);
     segments_.add_polygon(s, s.f, edges_, U_length, longest);
     bending_.add_polygon(s, s.f, edges_, U_bending);
-    for (int i = edges_.first, k = 0; i < poly_.first[m + 1]; ++i, ++k) {
-      const double e2 = edges_.e[k].squaredNorm();
-      outgrown = outgrown || e2 > edge_bound_[i] * edge_bound_[i];
-      if (corners_.may_touch(s, i, e2)) corner_edges_.push_back(i);  // capacity reserved: no allocation
+    const int n = poly_.first[m + 1] - edges_.first;
+    double perimeter = 0;
+    for (int k = 0; k < n; ++k) {
+      const int i = edges_.first + k;
+      outgrown = outgrown || edges_.e[k].squaredNorm() > edge_bound_[i] * edge_bound_[i];
+      perimeter += edges_.len[k];
     }
+    // most polygons are far from the orifice: one test for the polygon, then one per edge
+    if (!corners_.polygon_may_touch(s, edges_.first, perimeter)) continue;
+    for (int k = 0; k < n; ++k)
+      if (corners_.may_touch(s, edges_.first + k, edges_.e[k].squaredNorm()))
+        corner_edges_.push_back(edges_.first + k);  // capacity reserved: no allocation
   }
   segments_.set_longest_edge(longest);
   edge_outgrown_ = outgrown;

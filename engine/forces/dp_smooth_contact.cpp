@@ -7,18 +7,33 @@
 
 namespace beverloo {
 
+/// The arrays the evaluation reads, as local pointers: through the containers GCC reloaded each
+/// array's base pointer after every force store (the stores might alias them). The operations
+/// are the same, so the same bits.
+struct DpSmoothContact::View {
+  const Vec<2>* x;
+  const Vec<2>* v;
+  const std::uint8_t* species;
+  const int* next;
+  const int* prev;
+  const int* owner;
+  Vec<2>* f;
+  double width[2];  ///< copies of width_, eps_, eps_vertex_ (members could be aliased by the stores too)
+  double eps, eps_vertex;
+};
+
 template <DpSmoothContact::Mode kMode>
-void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy,
-                                  double& power, double& max_ov, FoldCap cap) const {
-  const int an = p_.next[a];
+void DpSmoothContact::edge_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov,
+                                  FoldCap cap) const {
+  const int an = s.next[a];
   const Vec<2> ra = s.x[a];
   const Vec<2> e = s.x[an] - ra;
   const Vec<2> q = s.x[b] - ra;
   const double e2 = e.squaredNorm();
   const double t = q.dot(e) / e2;
-  const double dmn = 0.5 * (width_[s.species[a]] + width_[s.species[b]]);
+  const double dmn = 0.5 * (s.width[s.species[a]] + s.width[s.species[b]]);
   double d, w_start, w_end;  // distance; lever weights of the edge's start and end vertices
-  double eps = eps_;         // the energy scale: the corner branch's is eps_vertex_
+  double eps = s.eps;         // the energy scale: the corner branch's is eps_vertex_
   Vec<2> dir;                // unit vector along which d grows when vertex b moves
   // contact with one end vertex of the edge (a corner, or a fold pair's cap); r = r_b - that end
   auto to_end_vertex = [&](const Vec<2>& r, bool at_start) {
@@ -51,11 +66,11 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
     // Inside the previous edge's slab (t_prev <= 1) the previous edge has the contact. t_prev
     // is computed with the very operations of that edge's own test, so that exactly one of the
     // two branches holds on the boundary.
-    const Vec<2> rp = s.x[p_.prev[a]];
+    const Vec<2> rp = s.x[s.prev[a]];
     const Vec<2> ep = ra - rp;
     if ((s.x[b] - rp).dot(ep) / ep.squaredNorm() <= 1) return;
     if (!to_end_vertex(q, true)) return;
-    eps = eps_vertex_;
+    eps = s.eps_vertex;
   } else {
     return;  // beyond the end: the next edge's start vertex (its wedge) or its slab; or no corners
   }
@@ -68,56 +83,58 @@ void DpSmoothContact::edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int
       worst_ = {b, a};
     }
     const Vec<2> fb = repulsion * dir;  // on the vertex, away from the edge
-    f[b] += fb;
-    f[a] -= w_start * fb;
-    f[an] -= w_end * fb;
+    s.f[b] += fb;
+    s.f[a] -= w_start * fb;
+    s.f[an] -= w_end * fb;
   }
   if constexpr (kMode != Mode::Repulsion) {
-    if (p_.owner[a] == p_.owner[b]) return;  // kinetic friction acts between particles only
+    if (s.owner[a] == s.owner[b]) return;  // kinetic friction acts between particles only
     const Vec<2> v_contact = w_start * s.v[a] + w_end * s.v[an];
     const Vec<2> rel = s.v[b] - v_contact;
     // split along the contact normal (the edge's normal, or the corner's vertex-vertex line)
     const Vec<2> ff = law_.split() ? kinetic_friction_force<2>(law_, s.v[b], v_contact, dir) : Vec<2>(-law_.mu_t * rel);
     power += ff.dot(rel);
-    f[b] += ff;
-    f[a] -= w_start * ff;
-    f[an] -= w_end * ff;
+    s.f[b] += ff;
+    s.f[a] -= w_start * ff;
+    s.f[an] -= w_end * ff;
   }
 }
 
 template <DpSmoothContact::Mode kMode>
-void DpSmoothContact::edges_at_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy,
-                                      double& power, double& max_ov) const {
+void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double& energy, double& power,
+                                      double& max_ov) const {
   // The same expression for the same pair of points wherever it is evaluated, so that the
   // nearer-end test of an edge gives one answer from either end (exactly one end counts it).
   auto dist2 = [&](int u) { return (s.x[b] - s.x[u]).squaredNorm(); };
   const double da = dist2(a);
   // A vertex one place beyond an edge's end (b = next(next(a)) or prev(prev(a)) of the same
   // polygon) is the fold loop's (the list leaves out its pair with that end).
-  const int an = p_.next[a], ap = p_.prev[a];
+  const int an = s.next[a], ap = s.prev[a];
   // Cheap rejection before the projection: from its nearer end a, the foot of b lies at most
   // half the edge away, so b is at least sqrt(da - |e|^2/4) from the edge (and sqrt(da) from a
   // corner); beyond the contact width no branch of edge_vertex acts. Most list pairs end here
   // (rough lists reach a disk diameter, vertices in contact sit ~0.87 l0 from a core edge).
   // The margin keeps rounding from ever skipping a pair that edge_vertex would count.
-  const double dmn = 0.5 * (width_[s.species[a]] + width_[s.species[b]]);
+  const double dmn = 0.5 * (s.width[s.species[a]] + s.width[s.species[b]]);
   auto may_touch = [&](int start, int end) {
     return da <= (dmn * dmn + 0.25 * (s.x[end] - s.x[start]).squaredNorm()) * (1 + 1e-9);
   };
-  if (b != p_.next[an] && da <= dist2(an) && may_touch(a, an))
-    edge_vertex<kMode>(s, f, a, b, energy, power, max_ov);  // edge a -> next
-  if (b != p_.prev[ap] && da < dist2(ap) && may_touch(ap, a))
-    edge_vertex<kMode>(s, f, ap, b, energy, power, max_ov);  // edge prev -> a
+  if (b != s.next[an] && da <= dist2(an) && may_touch(a, an))
+    edge_vertex<kMode>(s, a, b, energy, power, max_ov);  // edge a -> next
+  if (b != s.prev[ap] && da < dist2(ap) && may_touch(ap, a))
+    edge_vertex<kMode>(s, ap, b, energy, power, max_ov);  // edge prev -> a
 }
 
 template <DpSmoothContact::Mode kMode>
 TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) const {
   double energy = 0, power = 0, max_ov = 0;
   const int n = s.size();
+  const View view{s.x.data(), s.v.data(),  s.species.data(), p_.next.data(), p_.prev.data(), p_.owner.data(),
+                  f.data(),   {width_[0], width_[1]}, eps_, eps_vertex_};
   for (int i = 0; pairs_ && i < n; ++i) {
     for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
-      edges_at_vertex<kMode>(s, f, i, *p, energy, power, max_ov);
-      edges_at_vertex<kMode>(s, f, *p, i, energy, power, max_ov);
+      edges_at_vertex<kMode>(view, i, *p, energy, power, max_ov);
+      edges_at_vertex<kMode>(view, *p, i, energy, power, max_ov);
     }
   }
   // Folds: each edge against the vertex one place beyond either of its ends, of its own polygon
@@ -136,12 +153,12 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
     // the caps can act, and they act only on an edge shorter than the width. The cap tests
     // below compare the same squared lengths, so skipping changes no result (but for rounding
     // of t at exactly 90 degrees, where the slab's distance is the cap's).
-    const Vec<2> u = s.x[p_.prev[k]] - s.x[k];
-    const Vec<2> v = s.x[p_.next[k]] - s.x[k];
-    const double w = width_[s.species[k]];
+    const Vec<2> u = view.x[view.prev[k]] - view.x[k];
+    const Vec<2> v = view.x[view.next[k]] - view.x[k];
+    const double w = view.width[view.species[k]];
     if (u.dot(v) < 0 && u.squaredNorm() >= w * w && v.squaredNorm() >= w * w) continue;
-    edge_vertex<kMode>(s, f, p_.prev[k], p_.next[k], energy, power, max_ov, FoldCap::AtEnd);  // edge prev(k) -> k
-    edge_vertex<kMode>(s, f, k, p_.prev[k], energy, power, max_ov, FoldCap::AtStart);         // edge k -> next(k)
+    edge_vertex<kMode>(view, view.prev[k], view.next[k], energy, power, max_ov, FoldCap::AtEnd);  // edge prev(k) -> k
+    edge_vertex<kMode>(view, k, view.prev[k], energy, power, max_ov, FoldCap::AtStart);         // edge k -> next(k)
   }
   if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;
   return {energy, power};

@@ -108,15 +108,15 @@ class DpSmoothContact final : public ForceTerm<2> {
   using NormalLaw = HarmonicOverlap;
   template <Mode kMode>
   TermOutput loop(const ParticleState<2>& s, VecArray<2>& f) const;
+  struct View;  ///< the state's and the polygons' arrays as pointers (the .cpp)
   /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.
   template <Mode kMode>
-  void edges_at_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
-                       double& max_ov) const;
+  void edges_at_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov) const;
   /// Fold pairs (same polygon, b one place beyond an end of edge a) cap the edge at that end.
   enum class FoldCap { None, AtStart, AtEnd };
   template <Mode kMode>
-  void edge_vertex(const ParticleState<2>& s, VecArray<2>& f, int a, int b, double& energy, double& power,
-                   double& max_ov, FoldCap cap = FoldCap::None) const;
+  void edge_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov,
+                   FoldCap cap = FoldCap::None) const;
 
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
                   FrictionLaw friction, bool corners, const char* name)

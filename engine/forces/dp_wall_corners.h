@@ -45,6 +45,15 @@ class DpWallCorners final : public ForceTerm<2> {
     for (const int i : edges) edge_against_corners(s, f, i, energy);
     return {energy, 0};
   }
+  /// False if no edge of a polygon with vertex `any` and perimeter `perimeter` can touch a corner:
+  /// an edge's start vertex is within half the perimeter of `any`, and a corner it touches within
+  /// its length (at most half the perimeter) plus half_delta of that start.
+  bool polygon_may_touch(const ParticleState<2>& s, int any, double perimeter) const {
+    const double reach = perimeter + half_width(1) + half_width(0);
+    for (const Vec<2>& c : corners_)
+      if ((c - s.x[any]).squaredNorm() < reach * reach) return true;
+    return false;
+  }
   /// False if the edge from vertex i (squared length e2) is surely out of both corners' reach:
   /// a corner in its slab within half_delta of its line is within sqrt(|e|^2 + half_delta^2) of r_i.
   bool may_touch(const ParticleState<2>& s, int i, double e2) const {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/atomic_file.h"
@@ -67,6 +68,11 @@ void fit_group(Crossover& g) {
   } catch (const FitError& err) {
     g.message = err.what();
   }
+  try {
+    g.fit_free = fit_crossover_free_plateaus(l, b, e);
+  } catch (const FitError& err) {
+    g.message_free = err.what();
+  }
 }
 }  // namespace
 
@@ -78,6 +84,8 @@ CampaignFits fit_campaign(db::Database& db) {
       "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
   std::map<std::string, std::size_t> index;
   std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool, bool>>>> raw;
+  // per series, replica, w: (Q, Q_err) of a flowing job, for the run-to-run spread of the exponent
+  std::map<std::string, std::map<int, std::map<double, std::pair<double, double>>>> by_replica;
   std::vector<json> series_jobs;               // per series, for labels that tell them apart
   std::map<std::string, json> base_job_of;     // series key -> its job without zeta and mu
   while (st.step()) {
@@ -142,6 +150,8 @@ CampaignFits fit_campaign(db::Database& db) {
     }
     out.series[index[key]].job_keys.push_back(st.get_text(0));
     raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0, st.get_text(5) == "time_limit");
+    if (st.get_int(4) == 0 && st.get_double(2) > 0 && st.get_double(3) > 0)
+      by_replica[key][job.value("replica", 0)][w] = {st.get_double(2), st.get_double(3)};
   }
   {
     std::vector<std::string> labels;
@@ -186,6 +196,41 @@ CampaignFits fit_campaign(db::Database& db) {
     } catch (const FitError& err) {
       s.message = err.what();
     }
+    // The run-to-run spread: each replica (seed) fitted alone where every one has the widths the
+    // pooled fit used; the sample standard deviation of their betas, beside the fit's own error
+    // (the pooled fit's error says how well one set of points fixes beta, not how far another
+    // seed's set would move it).
+    if (s.fit) {
+      const auto& reps = by_replica[s.key];
+      std::vector<double> betas;
+      for (const auto& [replica, pts] : reps) {
+        if (pts.size() != w.size()) continue;
+        std::vector<double> rw, rq, re;
+        for (const auto& [wr, qe] : pts) {
+          rw.push_back(wr);
+          rq.push_back(qe.first);
+          re.push_back(qe.second);
+        }
+        try {
+          betas.push_back(fit_beverloo(rw, rq, re).beta);
+        } catch (const FitError&) {
+        }
+      }
+      s.replica_fits = static_cast<int>(betas.size());
+      if (betas.size() >= 2) {
+        double mean = 0, ss = 0;
+        for (double b : betas) mean += b / betas.size();
+        for (double b : betas) ss += (b - mean) * (b - mean);
+        s.beta_replica_spread = std::sqrt(ss / (betas.size() - 1));
+      }
+    }
+    if (!s.rate_is_c0()) {
+      try {
+        s.authors_fit = fit_beverloo_bounded(w, Q, BoundedFitOptions::authors());
+      } catch (const FitError& err) {
+        s.authors_message = err.what();
+      }
+    }
   }
   // crossover groups: series sharing everything but zeta/mu, with the same drag for finite lambda
   std::map<std::string, Crossover> groups;
@@ -213,32 +258,53 @@ CampaignFits fit_campaign(db::Database& db) {
     fit_group(g);
     out.crossovers.push_back(g);
   }
-  // The authors' lambda axis (docs/authors-model.md): drag as a rate times the mass, varied at a
-  // fixed friction; lambda = drag_rate M(sigma_avg) / mu_t. Groups: series sharing everything
-  // but the drag, at the same mu; the limits are the same mu without drag (lambda = 0) and a
-  // rate-drag series without friction (lambda = inf).
-  std::map<std::string, Crossover> by_friction;
+  // The authors' lambda axis (docs/authors-model.md): drag as a rate times the mass, and
+  // lambda = drag_rate M(sigma_avg) / mu_t. Their Fig. 4 varies it along two branches, the drag
+  // at a fixed friction and then the friction at a fixed drag (Matlab-process oop/paper.m, bVec
+  // and vVec), and plots both as one beta(lambda): so a group is every rate-drag series with
+  // friction sharing everything else (the form of the friction, mu_n, included). Its limits:
+  // lambda = 0, the friction of its lowest-lambda series without drag; lambda = inf, the drag of
+  // its highest-lambda series without friction (else any rate-drag series without friction).
+  std::map<std::string, Crossover> by_rate_drag;
   for (const Series& s : out.series) {
     if (!(s.drag_rate > 0) || s.zeta != 0 || !(s.mu > 0) || s.drain) continue;
-    const std::string gkey = s.base_key + "|mu=" + fmt(s.mu, 12) + "|mu_n=" + (s.mu_n ? fmt(*s.mu_n, 12) : "mu") +
-                             "|mu_t=" + (s.mu_t ? fmt(*s.mu_t, 12) : "mu");
-    Crossover& g = by_friction[gkey];
+    const std::string gkey = s.base_key + "|rate_drag|mu_n=" + (s.mu_n ? fmt(*s.mu_n, 12) : "mu");
+    Crossover& g = by_rate_drag[gkey];
     g.key = sha256_hex(gkey);
     g.dimension = s.dimension;
-    g.label = std::to_string(s.dimension) + "D " + s.stiffness + " mu=" + fmt(s.mu, 4) + " (drag rate) N=" +
-              std::to_string(s.N);
     if (s.fit) g.finite.push_back(&s);
   }
-  for (auto& [gkey, g] : by_friction) {
+  for (auto& [gkey, g] : by_rate_drag) {
     const std::string base = gkey.substr(0, gkey.find('|'));
-    const double mu = g.finite.empty() ? NAN : g.finite.front()->mu;
-    for (const Series& s : out.series) {
-      if (s.base_key != base) continue;
-      if (!g.finite.empty() && s.zeta == 0 && s.drag_rate == 0 && s.mu == mu && s.mu_n == g.finite.front()->mu_n &&
-          s.mu_t == g.finite.front()->mu_t)
-        g.limit0 = &s;
-      if (s.mu == 0 && s.drag_rate > 0 && !g.limit_inf) g.limit_inf = &s;
+    const Series* lowest = nullptr;
+    const Series* highest = nullptr;
+    for (const Series* s : g.finite) {
+      if (!lowest || s->lambda < lowest->lambda) lowest = s;
+      if (!highest || s->lambda > highest->lambda) highest = s;
     }
+    std::set<double> frictions, drags;
+    for (const Series* s : g.finite) {
+      frictions.insert(s->mu);
+      drags.insert(s->drag_rate);
+    }
+    const Series* any_inf = nullptr;
+    for (const Series& s : out.series) {
+      if (s.base_key != base || s.drain) continue;
+      if (lowest && s.zeta == 0 && s.drag_rate == 0 && s.mu == lowest->mu && s.mu_n == lowest->mu_n &&
+          s.mu_t == lowest->mu_t)
+        g.limit0 = &s;
+      if (s.mu == 0 && s.zeta == 0 && s.drag_rate > 0) {
+        if (highest && s.drag_rate == highest->drag_rate) g.limit_inf = &s;
+        if (!any_inf) any_inf = &s;
+      }
+    }
+    if (!g.limit_inf) g.limit_inf = any_inf;
+    const Series* any = lowest ? lowest : g.limit0;
+    g.label = std::to_string(any ? any->dimension : g.dimension) + "D " + (any ? any->stiffness : std::string()) +
+              (frictions.size() == 1   ? " mu=" + fmt(*frictions.begin(), 4) + " (drag rate)"
+               : drags.size() == 1     ? " drag_rate=" + fmt(*drags.begin(), 4) + " (mu varied)"
+                                       : std::string(" (drag rate and mu varied)")) +
+              (any ? " N=" + std::to_string(any->N) : std::string());
     fit_group(g);
     out.crossovers.push_back(g);
   }
@@ -256,6 +322,34 @@ CampaignFits fit_campaign(db::Database& db) {
   return out;
 }
 
+namespace {
+/// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).
+std::string bound_names(const BoundedBeverlooFit& f) {
+  std::string out;
+  for (const auto& [at, name] : {std::pair{f.C_at_bound, "C"}, {f.k_at_bound, "k"}, {f.beta_at_bound, "beta"}})
+    if (at) {
+      if (!out.empty()) out += ',';
+      out += name;
+    }
+  return out;
+}
+
+void store_authors_fit(db::Statement& au, const Series& s) {
+  au.bind(1, s.key);
+  if (s.authors_fit) {
+    const BeverlooFit& f = s.authors_fit->fit;
+    au.bind(2, f.C).bind(3, f.C_err).bind(4, f.k).bind(5, f.k_err).bind(6, f.beta).bind(7, f.beta_err).bind(8, f.points)
+        .bind(9, bound_names(*s.authors_fit)).bind_null(10);
+  } else {
+    for (int c = 2; c <= 9; ++c) au.bind_null(c);
+    if (s.authors_message.empty()) au.bind_null(10); else au.bind(10, s.authors_message);
+  }
+  au.bind(11, s.replica_fits);
+  if (std::isnan(s.beta_replica_spread)) au.bind_null(12); else au.bind(12, s.beta_replica_spread);
+  au.run();
+}
+}  // namespace
+
 void store_fits(db::Database& db, const CampaignFits& fits) {
   db::Transaction tx(db);
   db.exec("DELETE FROM series_points; DELETE FROM beverloo_fit_results; DELETE FROM crossover_fit_results; "
@@ -270,6 +364,10 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       "?20, ?21, ?22, ?23, ?24, ?25, ?26)");
   db::Statement pt = db.prepare(
       "INSERT INTO series_points (series_key, w, Q, Q_err, replicas, clogged) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  db::Statement au = db.prepare(
+      "UPDATE beverloo_fit_results SET authors_C = ?2, authors_C_err = ?3, authors_k = ?4, authors_k_err = ?5, "
+      "authors_beta = ?6, authors_beta_err = ?7, authors_points = ?8, authors_at_bound = ?9, authors_message = ?10, "
+      "replica_fits = ?11, beta_replica_spread = ?12 WHERE series_key = ?1");
   for (const Series& s : fits.series) {
     int flowing = 0;
     for (const auto& p : s.points) flowing += p.flowing();
@@ -306,6 +404,7 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       ins.bind(20, s.message);
     }
     ins.run();
+    store_authors_fit(au, s);
     for (const auto& p : s.points)
       pt.bind(1, s.key).bind(2, p.w).bind(3, p.Q).bind(4, p.Q_err).bind(5, p.replicas).bind(6, p.clogged).run();
   }
@@ -313,6 +412,10 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       "INSERT INTO crossover_fit_results (group_key, label, dimension, points, lambda_c, lambda_c_err, b, b_err, chi2_red, "
       "beta_lambda0, beta_lambda0_err, beta_inf, beta_inf_err, message) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, "
       "?11, ?12, ?13, ?14)");
+  db::Statement fr = db.prepare(
+      "UPDATE crossover_fit_results SET free_lambda_c = ?2, free_lambda_c_err = ?3, free_b = ?4, free_b_err = ?5, "
+      "free_beta_lambda0 = ?6, free_beta_lambda0_err = ?7, free_beta_inf = ?8, free_beta_inf_err = ?9, free_chi2_red = ?10, "
+      "free_message = ?11 WHERE group_key = ?1");
   for (const Crossover& g : fits.crossovers) {
     cx.bind(1, g.key).bind(2, g.label).bind(3, g.dimension).bind(4, static_cast<int>(g.finite.size()));
     if (g.fit)
@@ -327,6 +430,16 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
     limit(12, g.limit_inf);
     if (g.fit) cx.bind_null(14); else cx.bind(14, g.message);
     cx.run();
+    fr.bind(1, g.key);
+    if (g.fit_free) {
+      const CrossoverFit& f = *g.fit_free;
+      fr.bind(2, f.lambda_c).bind(3, f.lambda_c_err).bind(4, f.b).bind(5, f.b_err).bind(6, f.beta_0).bind(7, f.beta_0_err)
+          .bind(8, f.beta_inf).bind(9, f.beta_inf_err).bind(10, f.chi2_red).bind_null(11);
+    } else {
+      for (int c = 2; c <= 10; ++c) fr.bind_null(c);
+      fr.bind(11, g.message_free);
+    }
+    fr.run();
   }
   tx.commit();
 }
@@ -375,7 +488,78 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
       xmd << "no fit: " << markdown_cell(g.message) << " | | ";
     xmd << " | " << b0 << " | " << binf << " |\n";
   }
+  // both ways side by side: the default free fit and the authors' bounded one; the crossover
+  // with the paper's fixed plateaus and with free ones
+  std::ostringstream bcsv, bmd, fcsv, fmd;
+  bcsv << "label,lambda,beta,beta_err,replica_fits,beta_replica_spread,k,k_err,C,C_err,authors_points,authors_beta,authors_beta_err,authors_k,authors_k_err,"
+          "authors_C,authors_C_err,authors_at_bound,authors_message\n";
+  bmd << "| series | beta (free) | spread of beta over replicas | beta (authors' way) | k (free) | k (authors' way) | at a "
+         "bound |\n|---|---|---|---|---|---|---|\n";
+  for (const Series& s : fits.series) {
+    if (s.rate_is_c0()) continue;
+    bcsv << csv_field(s.label) << ',' << format_lambda(s.lambda) << ',';
+    if (s.fit)
+      bcsv << fmt(s.fit->beta, 8) << ',' << fmt(s.fit->beta_err, 4) << ',' << s.replica_fits << ','
+           << (std::isnan(s.beta_replica_spread) ? std::string() : fmt(s.beta_replica_spread, 4)) << ',' << fmt(s.fit->k, 8)
+           << ',' << fmt(s.fit->k_err, 4) << ',' << fmt(s.fit->C, 8) << ',' << fmt(s.fit->C_err, 4) << ',';
+    else
+      bcsv << ",,,,,,,,";
+    if (s.authors_fit) {
+      const BeverlooFit& a = s.authors_fit->fit;
+      bcsv << a.points << ',' << fmt(a.beta, 8) << ',' << fmt(a.beta_err, 4) << ',' << fmt(a.k, 8) << ',' << fmt(a.k_err, 4)
+           << ',' << fmt(a.C, 8) << ',' << fmt(a.C_err, 4) << ',' << csv_field(bound_names(*s.authors_fit)) << ",\n";
+    } else {
+      bcsv << ",,,,,,,," << csv_field(s.authors_message) << "\n";
+    }
+    auto pm = [](double v, double e) { return fmt(v) + " ± " + fmt(e, 2); };
+    const std::string spread = std::isnan(s.beta_replica_spread)
+                                   ? std::string("-")
+                                   : fmt(s.beta_replica_spread, 2) + " (" + std::to_string(s.replica_fits) + " replicas)";
+    bmd << "| " << markdown_cell(s.label) << " | " << (s.fit ? pm(s.fit->beta, s.fit->beta_err) : "no fit") << " | " << spread
+        << " | " << (s.authors_fit ? pm(s.authors_fit->fit.beta, s.authors_fit->fit.beta_err) : "no fit") << " | "
+        << (s.fit ? pm(s.fit->k, s.fit->k_err) : "") << " | "
+        << (s.authors_fit ? pm(s.authors_fit->fit.k, s.authors_fit->fit.k_err) : "") << " | "
+        << (s.authors_fit ? bound_names(*s.authors_fit) : markdown_cell(s.authors_message)) << " |\n";
+  }
+  fcsv << "label,points,lambda_c,lambda_c_err,b,b_err,chi2_red,free_lambda_c,free_lambda_c_err,free_b,free_b_err,"
+          "free_beta_lambda0,free_beta_lambda0_err,free_beta_inf,free_beta_inf_err,free_chi2_red,free_message\n";
+  fmd << "| group | lambda_c (plateaus 1/2, 3/2 from d) | chi2_red | lambda_c (plateaus free) | b | beta(0) fitted | "
+         "beta(inf) fitted | chi2_red | beta(0), beta(inf) measured |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const Crossover& g : fits.crossovers) {
+    fcsv << csv_field(g.label) << ',' << g.finite.size() << ',';
+    if (g.fit)
+      fcsv << fmt(g.fit->lambda_c, 8) << ',' << fmt(g.fit->lambda_c_err, 4) << ',' << fmt(g.fit->b, 8) << ','
+           << fmt(g.fit->b_err, 4) << ',' << fmt(g.fit->chi2_red, 4) << ',';
+    else
+      fcsv << ",,,,,";
+    if (g.fit_free) {
+      const CrossoverFit& f = *g.fit_free;
+      fcsv << fmt(f.lambda_c, 8) << ',' << fmt(f.lambda_c_err, 4) << ',' << fmt(f.b, 8) << ',' << fmt(f.b_err, 4) << ','
+           << fmt(f.beta_0, 8) << ',' << fmt(f.beta_0_err, 4) << ',' << fmt(f.beta_inf, 8) << ',' << fmt(f.beta_inf_err, 4)
+           << ',' << fmt(f.chi2_red, 4) << ",\n";
+    } else {
+      fcsv << ",,,,,,,,," << csv_field(g.message_free) << "\n";
+    }
+    auto measured = [](const Series* s) { return s && s->fit ? fmt(s->fit->beta) + " ± " + fmt(s->fit->beta_err, 2) : std::string("-"); };
+    fmd << "| " << markdown_cell(g.label) << " | "
+        << (g.fit ? fmt(g.fit->lambda_c) + " ± " + fmt(g.fit->lambda_c_err, 2) + " | " + fmt(g.fit->chi2_red, 3)
+                  : "no fit | ")
+        << " | ";
+    if (g.fit_free) {
+      const CrossoverFit& f = *g.fit_free;
+      fmd << fmt(f.lambda_c) << " ± " << fmt(f.lambda_c_err, 2) << " | " << fmt(f.b) << " ± " << fmt(f.b_err, 2) << " | "
+          << fmt(f.beta_0) << " ± " << fmt(f.beta_0_err, 2) << " | " << fmt(f.beta_inf) << " ± " << fmt(f.beta_inf_err, 2)
+          << " | " << fmt(f.chi2_red, 3);
+    } else {
+      fmd << "no fit: " << markdown_cell(g.message_free) << " | | | | ";
+    }
+    fmd << " | " << measured(g.limit0) << ", " << measured(g.limit_inf) << " |\n";
+  }
   const std::filesystem::path d(dir);
+  write_text_atomically((d / "beverloo_fits_both_ways.csv").string(), bcsv.str());
+  write_text_atomically((d / "beverloo_fits_both_ways.md").string(), bmd.str());
+  write_text_atomically((d / "crossover_fits_both_ways.csv").string(), fcsv.str());
+  write_text_atomically((d / "crossover_fits_both_ways.md").string(), fmd.str());
   write_text_atomically((d / "beverloo_fits.csv").string(), csv.str());
   write_text_atomically((d / "beverloo_fits.md").string(), md.str());
   write_text_atomically((d / "crossover_fits.csv").string(), xcsv.str());

@@ -48,6 +48,15 @@ struct Series {
   std::vector<std::string> job_keys;
   std::optional<BeverlooFit> fit;
   std::string message;  ///< why there is no fit
+  /// The same points fitted the way the paper's authors fitted theirs (fit_beverloo_bounded with
+  /// BoundedFitOptions::authors(): bounded, unweighted, 2 < w < 19); beside the default, never
+  /// instead of it.
+  std::optional<BoundedBeverlooFit> authors_fit;
+  std::string authors_message;
+  /// Replicas fitted one by one (those with every width of the pooled fit), and the sample
+  /// standard deviation of their betas (NaN below two): the run-to-run spread.
+  int replica_fits = 0;
+  double beta_replica_spread = NAN;
   int clogged_points() const;
 };
 
@@ -64,6 +73,9 @@ struct Crossover {
   const Series* limit_inf = nullptr;  ///< lambda = inf (drag only)
   std::optional<CrossoverFit> fit;
   std::string message;
+  /// beta(lambda) with its plateaus free (fit_crossover_free_plateaus), beside the paper's fixed ones
+  std::optional<CrossoverFit> fit_free;
+  std::string message_free;
 };
 
 struct CampaignFits {

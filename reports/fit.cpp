@@ -155,7 +155,93 @@ CrossoverFit fit_crossover(int d, const std::vector<double>& lambda, const std::
   f.b = std::exp(best.x[1]);
   f.b_err = f.b * std::sqrt(best.cov[3]);
   f.chi2_red = lambda.size() > 2 ? best.chi2 / (lambda.size() - 2) : 0;
+  f.beta_0 = d - 0.5;
+  f.beta_inf = d - 1.5;
   return f;
+}
+
+CrossoverFit fit_crossover_free_plateaus(const std::vector<double>& lambda, const std::vector<double>& beta,
+                                         const std::vector<double>& beta_err) {
+  check_inputs("crossover fit (plateaus free)", lambda, beta, beta_err, 5);
+  for (double l : lambda)
+    if (!(l > 0) || !std::isfinite(l)) throw FitError("crossover fit: lambda must be finite and > 0 (the limits are not fitted)");
+  // Parameters (log10 lambda_c, log b, beta_0, beta_inf).
+  Problem pr{lambda.size(), 4, [&](std::size_t i, const double* x) {
+               return x[3] + (x[2] - x[3]) * 0.5 * (1 - std::tanh((std::log10(lambda[i]) - x[0]) / std::exp(x[1])));
+             }, &beta};
+  const double lo = std::log10(*std::min_element(lambda.begin(), lambda.end()));
+  const double hi = std::log10(*std::max_element(lambda.begin(), lambda.end()));
+  const double b_max = *std::max_element(beta.begin(), beta.end()), b_min = *std::min_element(beta.begin(), beta.end());
+  Solution best;
+  for (double frac : {0.5, 0.25, 0.75})
+    for (double b0 : {0.5, 1.0, 2.0}) {
+      Solution s = solve(pr, {lo + frac * (hi - lo), std::log(b0), b_max, b_min}, beta_err);
+      if (s.ok && s.chi2 < best.chi2) best = s;
+    }
+  if (!best.ok) throw FitError("crossover fit (plateaus free): the solver did not converge from any start");
+  CrossoverFit f;
+  f.plateaus_free = true;
+  f.points = static_cast<int>(lambda.size());
+  f.log10_lambda_c = best.x[0];
+  f.log10_lambda_c_err = std::sqrt(best.cov[0]);
+  f.lambda_c = std::pow(10.0, best.x[0]);
+  f.lambda_c_err = f.lambda_c * std::log(10.0) * f.log10_lambda_c_err;
+  f.b = std::exp(best.x[1]);
+  f.b_err = f.b * std::sqrt(best.cov[5]);
+  f.beta_0 = best.x[2];
+  f.beta_0_err = std::sqrt(best.cov[10]);
+  f.beta_inf = best.x[3];
+  f.beta_inf_err = std::sqrt(best.cov[15]);
+  f.chi2_red = lambda.size() > 4 ? best.chi2 / (lambda.size() - 4) : 0;
+  return f;
+}
+
+BoundedBeverlooFit fit_beverloo_bounded(const std::vector<double>& w_all, const std::vector<double>& Q_all,
+                                        const BoundedFitOptions& o) {
+  std::vector<double> w, Q;
+  for (std::size_t i = 0; i < w_all.size() && i < Q_all.size(); ++i)
+    if (w_all[i] > o.w_lo && w_all[i] < o.w_hi && std::isfinite(Q_all[i])) {
+      w.push_back(w_all[i]);
+      Q.push_back(Q_all[i]);
+    }
+  const std::vector<double> unit(w.size(), 1.0);  // unweighted, as MATLAB's fit without weights
+  check_inputs("bounded Beverloo fit", w, Q, unit, 4);
+  // Each parameter through p = lo + (hi - lo)(1 + sin u)/2 (MINUIT's transformation): any u is
+  // inside the bounds, and a bound is reached exactly where the optimum lies beyond it.
+  const double lo[3] = {o.C_lo, o.k_lo, o.beta_lo}, hi[3] = {o.C_hi, o.k_hi, o.beta_hi};
+  auto param = [&](int j, double u) { return lo[j] + (hi[j] - lo[j]) * 0.5 * (1 + std::sin(u)); };
+  auto inverse = [&](int j, double p) {
+    const double t = std::clamp(2 * (p - lo[j]) / (hi[j] - lo[j]) - 1, -1.0, 1.0);
+    return std::asin(t);
+  };
+  Problem pr{w.size(), 3, [&](std::size_t i, const double* x) {
+               return std::fabs(param(0, x[0]) * std::pow(std::fabs(w[i] - param(1, x[1])), param(2, x[2])));
+             }, &Q};
+  Solution best;
+  // the authors start from k = 2, C = 0.01 of their unit and beta = 1.5 - i/16 for their i-th
+  // series; several starts here, the best kept (a bounded least-squares optimum does not depend on them)
+  for (double beta0 : {0.5, 1.0, 1.5})
+    for (double k0 : {1.0, 2.0, 3.5}) {
+      Solution s = solve(pr, {inverse(0, 0.01 * kAuthorsFlowUnit), inverse(1, k0), inverse(2, beta0)}, unit);
+      if (s.ok && s.chi2 < best.chi2) best = s;
+    }
+  if (!best.ok) throw FitError("bounded Beverloo fit: the solver did not converge from any start");
+  BoundedBeverlooFit out;
+  BeverlooFit& f = out.fit;
+  f.points = static_cast<int>(w.size());
+  const double dof = w.size() > 3 ? static_cast<double>(w.size() - 3) : 1.0;
+  const double s2 = best.chi2 / dof;  // residual variance: the unweighted fit's error scale
+  double value[3], err[3];
+  bool at[3];
+  for (int j = 0; j < 3; ++j) {
+    value[j] = param(j, best.x[j]);
+    err[j] = (hi[j] - lo[j]) * 0.5 * std::fabs(std::cos(best.x[j])) * std::sqrt(s2 * best.cov[4 * j]);
+    at[j] = std::fabs(std::cos(best.x[j])) < 1e-3;  // within ~5e-7 of the range of a bound
+  }
+  f.C = value[0], f.C_err = err[0], f.k = value[1], f.k_err = err[1], f.beta = value[2], f.beta_err = err[2];
+  f.chi2_red = s2;  // unweighted: the mean squared residual per degree of freedom, in Q's units squared
+  out.C_at_bound = at[0], out.k_at_bound = at[1], out.beta_at_bound = at[2];
+  return out;
 }
 
 }  // namespace beverloo

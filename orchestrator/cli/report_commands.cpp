@@ -38,7 +38,11 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   auto dir = std::make_shared<std::string>();
   CLI::App* fit = app.add_subcommand("fit", "Fit Q = C (w - k)^beta per series and beta(lambda) per group");
   fit->add_option("DIR", *dir, "campaign directory")->required();
-  fit->callback([dir, &exit_status] {
+  auto authors_way = std::make_shared<bool>(false);
+  fit->add_flag("--authors-way", *authors_way,
+                "also print every exponent fitted as the paper's authors fitted theirs (bounded, unweighted, 2 < w < 19) "
+                "and the crossover with free plateaus, beside the default fits (docs/paper.md)");
+  fit->callback([dir, authors_way, &exit_status] {
     exit_status = guarded("fit", [&] {
       CampaignWriter writer(*dir, CampaignWriter::Open::MustExist);
       db::Database& db = writer.db();
@@ -54,11 +58,16 @@ void add_report_commands(CLI::App& app, int& exit_status) {
       write_fit_tables(fits, out);
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
+      if (*authors_way) {
+        std::ifstream bmd(fs::path(out) / "beverloo_fits_both_ways.md"), fmd(fs::path(out) / "crossover_fits_both_ways.md");
+        std::cout << "\nBoth ways: beverloo's free fit (the default) beside the authors' bounded one\n\n" << bmd.rdbuf()
+                  << "\n" << fmd.rdbuf();
+      }
       for (const Series& s : fits.series)
         if (s.left_out > 0)
           std::printf("\n%s: %d replica(s) with a flow rate but no usable error (Q_err not > 0) left out of the fit\n",
                       terminal_safe(s.label).c_str(), s.left_out);
-      std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits) and %s/*.csv, *.md\n",
+      std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits, beverloo_fits_both_ways, crossover_fits_both_ways) and %s/*.csv, *.md\n",
                   terminal_safe(*dir).c_str(), terminal_safe(out).c_str());
       return exit_code::kOk;
     });

@@ -105,5 +105,56 @@ TEST(CrossoverFit, ThreeDimensionalLimitsAndDegenerateInput) {
   EXPECT_THROW(fit_crossover(2, {0, 0.1, 1}, {1.5, 1.0, 0.5}, {0.1, 0.1, 0.1}), FitError);  // lambda = 0 is a limit
 }
 
+TEST(CrossoverFit, PlateausFreeRecoverMeasuredLimitsAndTheFixedFitDoesNot) {
+  // plateaus at 1.7 and 0.4 (as measured with the authors' set), not the paper's 1.5 and 0.5
+  const double lambda_c = 0.09, b = 0.6, beta_0 = 1.7, beta_inf = 0.4;
+  std::vector<double> lambda, beta, err;
+  for (int e = -50; e <= 30; e += 5) {
+    const double l = std::pow(10.0, e / 10.0);
+    lambda.push_back(l);
+    beta.push_back(beta_inf + (beta_0 - beta_inf) * 0.5 * (1 - std::tanh(std::log10(l / lambda_c) / b)));
+    err.push_back(0.05);
+  }
+  const CrossoverFit f = fit_crossover_free_plateaus(lambda, beta, err);
+  EXPECT_TRUE(f.plateaus_free);
+  EXPECT_NEAR(f.beta_0, beta_0, 1e-5);
+  EXPECT_NEAR(f.beta_inf, beta_inf, 1e-5);
+  EXPECT_NEAR(f.lambda_c, lambda_c, 1e-6);
+  EXPECT_NEAR(f.b, b, 1e-5);
+  EXPECT_GT(f.beta_0_err, 0);
+  EXPECT_LT(f.chi2_red, 1e-8);
+  const CrossoverFit fixed = fit_crossover(2, lambda, beta, err);
+  EXPECT_FALSE(fixed.plateaus_free);
+  EXPECT_EQ(fixed.beta_0, 1.5);
+  EXPECT_GT(fixed.chi2_red, 1.0);  // the fixed plateaus cannot follow limits 0.2 and 0.1 away
+  EXPECT_THROW(fit_crossover_free_plateaus({0.1, 1, 10, 100}, {1.5, 1.2, 0.8, 0.5}, {0.1, 0.1, 0.1, 0.1}), FitError);
+}
+
+TEST(BoundedBeverlooFit, InsideTheBoundsItIsTheLeastSquaresOptimumAndABoundHolds) {
+  // the authors' grid w = 3.0 .. 10.6 in steps of 0.4, exact data with beta = 1.2 inside the bounds
+  std::vector<double> w, Q;
+  for (int i = 0; i <= 19; ++i) {
+    w.push_back(3.0 + 0.4 * i);
+    Q.push_back(beverloo_model(w.back(), 0.8, 1.3, 1.2));
+  }
+  BoundedBeverlooFit f = fit_beverloo_bounded(w, Q, BoundedFitOptions::authors());
+  EXPECT_NEAR(f.fit.beta, 1.2, 1e-4);
+  EXPECT_NEAR(f.fit.k, 1.3, 1e-4);
+  EXPECT_NEAR(f.fit.C, 0.8, 1e-4);
+  EXPECT_FALSE(f.beta_at_bound || f.k_at_bound || f.C_at_bound);
+  EXPECT_EQ(f.fit.points, 20);
+  // beta = 1.8 beyond the authors' upper bound 1.58: the fit ends on the bound and says so
+  for (std::size_t i = 0; i < w.size(); ++i) Q[i] = beverloo_model(w[i], 0.3, 1.0, 1.8);
+  f = fit_beverloo_bounded(w, Q, BoundedFitOptions::authors());
+  EXPECT_NEAR(f.fit.beta, 1.58, 1e-6);
+  EXPECT_TRUE(f.beta_at_bound);
+  EXPECT_GT(f.fit.chi2_red, 0);
+  // widths outside (2, 19) are left out, as theirs were
+  w.push_back(25);
+  Q.push_back(1e6);
+  EXPECT_EQ(fit_beverloo_bounded(w, Q, BoundedFitOptions::authors()).fit.points, 20);
+  EXPECT_THROW(fit_beverloo_bounded({3, 4, 25}, {1, 2, 3}, BoundedFitOptions::authors()), FitError);
+}
+
 }  // namespace
 }  // namespace beverloo

@@ -1,0 +1,45 @@
+-- Every exponent fitted two ways (issue 32, docs/paper.md): beverloo's free fit (the default,
+-- the columns above) and the way the paper's authors fitted theirs: unweighted least squares
+-- within bounds (beta 0.4 .. 1.58, k 0.5 .. 5, C 0 .. 1 of their flow unit = 316.4
+-- sigma_avg^2/t0) over the widths 2 < w < 19 (reports/fit.h, BoundedFitOptions::authors).
+-- authors_at_bound names the parameters that ended on a bound ("beta", "k,beta", ...; '' none).
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_C REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_C_err REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_k REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_k_err REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_beta REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_beta_err REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_points INTEGER;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_at_bound TEXT;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_message TEXT;   -- why there is no such fit
+-- the run-to-run spread: each replica (seed) fitted alone (those with every width of the pooled
+-- fit), and the sample standard deviation of their betas (NULL below two replicas)
+ALTER TABLE beverloo_fit_results ADD COLUMN replica_fits INTEGER;
+ALTER TABLE beverloo_fit_results ADD COLUMN beta_replica_spread REAL;
+
+-- The crossover beta(lambda) also with its plateaus free (the paper fixes them at d - 1/2 and
+-- d - 3/2): beta_lambda0 and beta_inf are then fitted, beside the limits' own measured fits.
+ALTER TABLE crossover_fit_results ADD COLUMN free_lambda_c REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_lambda_c_err REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_b REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_b_err REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_beta_lambda0 REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_beta_lambda0_err REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_beta_inf REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_beta_inf_err REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_chi2_red REAL;
+ALTER TABLE crossover_fit_results ADD COLUMN free_message TEXT;
+
+CREATE VIEW beverloo_fits_both_ways AS
+SELECT label, dimension, N, lambda, points, beta, beta_err, replica_fits, beta_replica_spread, k, k_err, C, C_err,
+       authors_points, authors_beta, authors_beta_err, authors_k, authors_k_err, authors_C, authors_C_err,
+       authors_at_bound, authors_message, series_key
+FROM beverloo_fit_results ORDER BY dimension, E_sp, lambda;
+
+CREATE VIEW crossover_fits_both_ways AS
+SELECT label, dimension, points, lambda_c, lambda_c_err, b, b_err, chi2_red,
+       free_lambda_c, free_lambda_c_err, free_b, free_b_err, free_beta_lambda0, free_beta_lambda0_err,
+       free_beta_inf, free_beta_inf_err, free_chi2_red, free_message,
+       beta_lambda0 AS measured_beta_lambda0, beta_lambda0_err AS measured_beta_lambda0_err,
+       beta_inf AS measured_beta_inf, beta_inf_err AS measured_beta_inf_err, group_key
+FROM crossover_fit_results ORDER BY dimension, label;

@@ -1,4 +1,6 @@
-// beta versus lambda per crossover group, with the fitted sigmoid and the two limits.
+// beta versus lambda per crossover group, with the fitted sigmoid (the paper's fixed plateaus,
+// and free ones), the two limits, and the paper's stated values (its plateaus d - 1/2 and
+// d - 3/2 and lambda_c ~ 0.05 in 2D, ~ 0.07 in 3D) in grey; never rescaled (docs/paper.md).
 #include <cmath>
 
 #include "core/text_escape.h"
@@ -13,8 +15,20 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
   int n = 0;
   for (const Crossover& g : c.fits.crossovers) n += !g.finite.empty();
   int k = 0;
+  bool paper_drawn[4] = {false, false, false, false};
   for (const Crossover& g : c.fits.crossovers) {
     if (g.finite.empty()) continue;
+    if (g.dimension >= 2 && g.dimension <= 3 && !paper_drawn[g.dimension]) {
+      paper_drawn[g.dimension] = true;
+      const double d = g.dimension, lambda_c = g.dimension == 2 ? 0.05 : 0.07;
+      char label[96];
+      std::snprintf(label, sizeof label, "paper (%dD): beta = %.1f, %.1f; lambda_c ~ %.2g", g.dimension, d - 0.5, d - 1.5,
+                    lambda_c);
+      f.extra += "set arrow from " + num(lambda_c) + ", graph 0 to " + num(lambda_c) +
+                 ", graph 1 nohead dt 3 lc rgb 'gray50'\n";
+      f.plots.push_back(num(d - 0.5) + " with lines dt 3 lc rgb 'gray50' title " + gnuplot_string(label));
+      f.plots.push_back(num(d - 1.5) + " with lines dt 3 lc rgb 'gray50' notitle");
+    }
     const std::string style = series_style(k++, n);
     const int points = f.begin_block(g.label + ": lambda beta beta_err");
     for (const Series* s : g.finite) f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
@@ -30,6 +44,21 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
       char label[96];
       std::snprintf(label, sizeof label, "fit, lambda_c = %.2g", g.fit->lambda_c);
       f.plots.push_back("DATA index " + std::to_string(curve) + " using 1:2 with lines " + style + " title " + gnuplot_string(label));
+    }
+    if (g.fit_free) {
+      const CrossoverFit& ff = *g.fit_free;
+      const int curve = f.begin_block(g.label + ": sigmoid with free plateaus lambda beta");
+      const double lo = std::log10(g.finite.front()->lambda) - 1, hi = std::log10(g.finite.back()->lambda) + 1;
+      for (int i = 0; i <= 100; ++i) {
+        const double l = std::pow(10.0, lo + (hi - lo) * i / 100);
+        const double step = 0.5 * (1 - std::tanh(std::log10(l / ff.lambda_c) / ff.b));
+        f.data << num(l) << " " << num(ff.beta_inf + (ff.beta_0 - ff.beta_inf) * step) << "\n";
+      }
+      char label[128];
+      std::snprintf(label, sizeof label, "fit, plateaus free (%.2f, %.2f), lambda_c = %.2g", ff.beta_0, ff.beta_inf,
+                    ff.lambda_c);
+      f.plots.push_back("DATA index " + std::to_string(curve) + " using 1:2 with lines dt 5 " +
+                        style.substr(0, style.find(" pt")) + " title " + gnuplot_string(label));
     }
     for (const auto& [lim, name, dash] :
          {std::tuple{g.limit0, "lambda = 0", 2}, std::tuple{g.limit_inf, "lambda = inf", 4}})

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 #include "commands.h"
 #include "guarded.h"
@@ -17,10 +19,13 @@
 #include "orchestrator/executors/executor_factory.h"
 #include "engine/protocol/run_result.h"
 #include "orchestrator/campaign/store.h"
+#include "orchestrator/campaign/job_explain.h"
 #include "orchestrator/campaign/job_speed.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
 #include "core/text_escape.h"
+#include "engine/json_file.h"
+#include "orchestrator/sweep/sweep.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -146,6 +151,88 @@ int status_command(const std::string& dir) {
     std::printf("slurm        %lld arrays, %lld tasks; attempts in flight: %s\n", (long long)arrays.get_int(0),
                 (long long)arrays.get_int(1), states.empty() ? "none" : terminal_safe(states).c_str());
   }
+  return exit_code::kOk;
+}
+
+
+/// `campaign explain`: is this job cached here, and if not, which stored job is nearest and how
+/// does it differ (docs/cli.md).
+int explain_command(const std::string& dir, const std::string& what) {
+  CampaignReader reader(dir);  // read-only: also while a coordinator runs
+  db::Database& db = reader.db();
+  std::string key, source;
+  nlohmann::json job;
+  std::vector<std::string> identity_free;
+  auto free_paths = [](const SimConfig& c) {
+    std::set<std::string> in_key;
+    for (const auto& [path, value] : flatten_json(c.key_json())) in_key.insert(path);
+    std::vector<std::string> out;
+    for (const auto& [path, value] : flatten_json(c.to_json()))
+      if (!in_key.count(path)) out.push_back(path);
+    return out;
+  };
+  if (fs::is_regular_file(what)) {
+    SimConfig c;
+    try {
+      c = SimConfig::from_json(read_json_file(what));
+    } catch (const ConfigError& e) {
+      throw SweepError(what, e.what());
+    }
+    key = job_key(c);
+    job = c.to_json();
+    identity_free = free_paths(c);
+    source = what;
+  } else {
+    try {
+      std::tie(key, job) = find_stored_job(db, what);
+    } catch (const std::invalid_argument& e) {
+      throw SweepError(what, std::string(e.what()) + " (no such file either)");
+    }
+    try {
+      identity_free = free_paths(SimConfig::from_json(job));
+    } catch (const ConfigError&) {
+      // a job of another engine's parameter set: every field counts
+    }
+    source = "stored job";
+  }
+  const JobExplanation x = explain_job(db, key, job, identity_free);
+  std::printf("job          %s (%s), engine %s\n", key.c_str(), terminal_safe(source).c_str(), BEVERLOO_VERSION);
+  auto describe = [](const StoredJob& s) {
+    std::string d = s.state;
+    if (!s.result_status.empty()) {
+      char q[96];
+      std::snprintf(q, sizeof q, ", Q = %.4g +- %.2g (%s)", s.Q, s.Q_err, s.result_status.c_str());
+      d += q;
+    }
+    return d + ", engine " + s.engine_version;
+  };
+  if (x.found && (x.found->state == "done" || x.found->state == "clogged")) {
+    std::printf("cached       yes: %s; `beverloo run` reuses it\n", terminal_safe(describe(*x.found)).c_str());
+    return exit_code::kOk;
+  }
+  if (x.found)
+    std::printf("cached       no: in the store, %s (`beverloo campaign run` runs it)\n", terminal_safe(describe(*x.found)).c_str());
+  else
+    std::printf("cached       no: not in this store (a run of a sweep holding it computes it)\n");
+  if (!x.nearest) {
+    std::printf("nearest      none: no finished job among %lld stored\n", x.stored_jobs);
+    return exit_code::kOk;
+  }
+  std::printf("nearest      %s: %s\n", x.nearest->key.c_str(), terminal_safe(describe(*x.nearest)).c_str());
+  if (x.only_engine_differs) {
+    std::printf("differs in   nothing but the engine version (%s stored, %s here): results of another engine "
+                "version are not reused, because its bits may differ\n",
+                terminal_safe(x.nearest->engine_version).c_str(), BEVERLOO_VERSION);
+    return exit_code::kOk;
+  }
+  std::printf("differs in   %zu field%s (of the job's identity; checkpoint cadence, skin and other settings that cannot "
+              "change a result do not count):\n", x.differences.size(), x.differences.size() == 1 ? "" : "s");
+  for (const FieldDifference& d : x.differences)
+    std::printf("  %-24s this %-16s stored %s\n", terminal_safe(d.field).c_str(), terminal_safe(d.asked).c_str(),
+                terminal_safe(d.stored).c_str());
+  if (x.nearest->engine_version != BEVERLOO_VERSION)
+    std::printf("  %-24s this %-16s stored %s\n", "(engine version)", BEVERLOO_VERSION,
+                terminal_safe(x.nearest->engine_version).c_str());
   return exit_code::kOk;
 }
 
@@ -294,6 +381,14 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
         return exit_code::kOk;
       });
     });
+  });
+  CLI::App* explain = campaign->add_subcommand(
+      "explain", "Is this job cached here? If not, the nearest finished job and the fields in which it differs");
+  auto explain_what = std::make_shared<std::string>();
+  explain->add_option("JOB", *explain_what, "a job file (JSON) or a stored job's key (at least 8 hex digits)")->required();
+  explain->add_option("--dir", *dir, "campaign directory")->required();
+  explain->callback([=, &exit_status] {
+    exit_status = guarded("campaign explain", [&] { return explain_command(*dir, *explain_what); });
   });
   CLI::App* cancel = campaign->add_subcommand("cancel", "Pending jobs to cancelled");
   cancel->add_option("--dir", *dir, "campaign directory");

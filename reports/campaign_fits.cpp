@@ -79,13 +79,16 @@ void fit_group(Crossover& g) {
 CampaignFits fit_campaign(db::Database& db) {
   CampaignFits out;
   db::Statement st = db.prepare(
-      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status FROM jobs j "
+      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
       "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
       "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
   std::map<std::string, std::size_t> index;
   std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool, bool>>>> raw;
   // per series, replica, w: (Q, Q_err) of a flowing job, for the run-to-run spread of the exponent
   std::map<std::string, std::map<int, std::map<double, std::pair<double, double>>>> by_replica;
+  // per series and w: every run's time to its clog, or to its end (censored); and t_max
+  std::map<std::string, std::map<double, std::vector<SurvivalObservation>>> survival;
+  std::map<std::string, std::map<double, double>> t_max_of;
   std::vector<json> series_jobs;               // per series, for labels that tell them apart
   std::map<std::string, json> base_job_of;     // series key -> its job without zeta and mu
   while (st.step()) {
@@ -152,6 +155,12 @@ CampaignFits fit_campaign(db::Database& db) {
     raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0, st.get_text(5) == "time_limit");
     if (st.get_int(4) == 0 && st.get_double(2) > 0 && st.get_double(3) > 0)
       by_replica[key][job.value("replica", 0)][w] = {st.get_double(2), st.get_double(3)};
+    {
+      const bool clogged = st.get_int(4) != 0;
+      const double end = static_cast<double>(st.get_int(7)) * st.get_double(8);  // steps x dt: the run's end
+      survival[key][w].push_back({clogged && st.get_double(6) >= 0 ? st.get_double(6) : end, clogged});
+      t_max_of[key][w] = job.contains("run") ? job["run"].value("t_max", 0.0) : 0.0;
+    }
   }
   {
     std::vector<std::string> labels;
@@ -223,6 +232,13 @@ CampaignFits fit_campaign(db::Database& db) {
         for (double b : betas) ss += (b - mean) * (b - mean);
         s.beta_replica_spread = std::sqrt(ss / (betas.size() - 1));
       }
+    }
+    if (!s.rate_is_c0()) {
+      bool any_clog = false;
+      for (const auto& [wv, runs] : survival[s.key])
+        for (const SurvivalObservation& o : runs) any_clog = any_clog || o.clogged;
+      if (any_clog)
+        for (const auto& [wv, runs] : survival[s.key]) s.clog_points.push_back({wv, t_max_of[s.key][wv], kaplan_meier(runs)});
     }
     if (!s.rate_is_c0()) {
       try {
@@ -353,7 +369,10 @@ void store_authors_fit(db::Statement& au, const Series& s) {
 void store_fits(db::Database& db, const CampaignFits& fits) {
   db::Transaction tx(db);
   db.exec("DELETE FROM series_points; DELETE FROM beverloo_fit_results; DELETE FROM crossover_fit_results; "
-          "DELETE FROM experiment_fit_results;");
+          "DELETE FROM experiment_fit_results; DELETE FROM clog_survival;");
+  db::Statement cs = db.prepare(
+      "INSERT INTO clog_survival (series_key, label, w, runs, clogs, t_max, p_clog, p_clog_err, median_time, km_time, "
+      "km_survival, km_survival_err) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)");
   db::Statement ex = db.prepare(
       "INSERT INTO experiment_fit_results (series_id, label, points, C, C_err, k, k_err, beta, beta_err, chi2_red, message) "
       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
@@ -405,6 +424,13 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
     }
     ins.run();
     store_authors_fit(au, s);
+    for (const Series::ClogPoint& c : s.clog_points) {
+      const double horizon = c.t_max > 0 ? c.t_max : INFINITY;
+      cs.bind(1, s.key).bind(2, s.label).bind(3, c.w).bind(4, c.km.runs).bind(5, c.km.clogs).bind(6, c.t_max)
+          .bind(7, 1 - c.km.at(horizon)).bind(8, c.km.err_at(horizon));
+      if (std::isnan(c.km.median())) cs.bind_null(9); else cs.bind(9, c.km.median());
+      cs.bind(10, json(c.km.time).dump()).bind(11, json(c.km.survival).dump()).bind(12, json(c.km.survival_err).dump()).run();
+    }
     for (const auto& p : s.points)
       pt.bind(1, s.key).bind(2, p.w).bind(3, p.Q).bind(4, p.Q_err).bind(5, p.replicas).bind(6, p.clogged).run();
   }
@@ -555,7 +581,23 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     }
     fmd << " | " << measured(g.limit0) << ", " << measured(g.limit_inf) << " |\n";
   }
+  // clogging: per series and w with the Kaplan-Meier probability to clog within t_max
+  std::ostringstream ccsv, cmd;
+  ccsv << "label,w,runs,clogs,t_max,p_clog,p_clog_err,median_time\n";
+  cmd << "| series | w | runs | clogs | P(clog within t_max) | median time to clog [t0] |\n|---|---|---|---|---|---|\n";
+  for (const Series& s : fits.series)
+    for (const Series::ClogPoint& c : s.clog_points) {
+      const double horizon = c.t_max > 0 ? c.t_max : INFINITY, median = c.km.median();
+      ccsv << csv_field(s.label) << ',' << fmt(c.w, 10) << ',' << c.km.runs << ',' << c.km.clogs << ',' << fmt(c.t_max, 10) << ','
+           << fmt(1 - c.km.at(horizon), 6) << ',' << fmt(c.km.err_at(horizon), 4) << ','
+           << (std::isnan(median) ? std::string() : fmt(median, 6)) << "\n";
+      cmd << "| " << markdown_cell(s.label) << " | " << fmt(c.w) << " | " << c.km.runs << " | " << c.km.clogs << " | "
+          << fmt(1 - c.km.at(horizon), 3) << " ± " << fmt(c.km.err_at(horizon), 2) << " (t_max " << fmt(c.t_max) << ") | "
+          << (std::isnan(median) ? std::string("beyond the runs") : fmt(median, 3)) << " |\n";
+    }
   const std::filesystem::path d(dir);
+  write_text_atomically((d / "clog_statistics.csv").string(), ccsv.str());
+  write_text_atomically((d / "clog_statistics.md").string(), cmd.str());
   write_text_atomically((d / "beverloo_fits_both_ways.csv").string(), bcsv.str());
   write_text_atomically((d / "beverloo_fits_both_ways.md").string(), bmd.str());
   write_text_atomically((d / "crossover_fits_both_ways.csv").string(), fcsv.str());

@@ -13,6 +13,7 @@
 
 #include "orchestrator/db/database.h"
 #include "reports/fit.h"
+#include "reports/survival.h"
 
 namespace beverloo {
 
@@ -57,6 +58,13 @@ struct Series {
   /// standard deviation of their betas (NaN below two): the run-to-run spread.
   int replica_fits = 0;
   double beta_replica_spread = NAN;
+  /// Clogging as a result: per w, the time to a clog over the replicas (Kaplan-Meier, runs that
+  /// ended flowing censored at their end); every w of a series in which some run clogged.
+  struct ClogPoint {
+    double w = 0, t_max = 0;
+    KaplanMeier km;
+  };
+  std::vector<ClogPoint> clog_points;
   int clogged_points() const;
 };
 

@@ -43,3 +43,25 @@ SELECT label, dimension, points, lambda_c, lambda_c_err, b, b_err, chi2_red,
        beta_lambda0 AS measured_beta_lambda0, beta_lambda0_err AS measured_beta_lambda0_err,
        beta_inf AS measured_beta_inf, beta_inf_err AS measured_beta_inf_err, group_key
 FROM crossover_fit_results ORDER BY dimension, label;
+
+-- Clogging as a result (issue 30): per series and w, the time to a clog over the replicas by the
+-- Kaplan-Meier estimator, runs that ended flowing censored at their end (steps x dt); written
+-- by `beverloo fit` for every w of a series in which some run clogged (reports/survival.h).
+CREATE TABLE clog_survival (
+  series_key   TEXT NOT NULL,
+  label        TEXT NOT NULL,
+  w            REAL NOT NULL,
+  runs         INTEGER NOT NULL,   -- replicas with a result at this w
+  clogs        INTEGER NOT NULL,
+  t_max        REAL NOT NULL,      -- run.t_max of these jobs (t0)
+  p_clog       REAL NOT NULL,      -- 1 - S(t_max): the probability to clog within t_max
+  p_clog_err   REAL NOT NULL,      -- Greenwood's standard error
+  median_time  REAL,               -- first t with S(t) <= 1/2 (t0); NULL if S stays above
+  km_time      TEXT NOT NULL,      -- JSON arrays: the steps of S(t) and their errors
+  km_survival  TEXT NOT NULL,
+  km_survival_err TEXT NOT NULL,
+  PRIMARY KEY (series_key, w)
+);
+CREATE VIEW clog_statistics AS
+SELECT label, w, runs, clogs, t_max, p_clog, p_clog_err, median_time, series_key
+FROM clog_survival ORDER BY label, w;

@@ -58,6 +58,13 @@ void add_report_commands(CLI::App& app, int& exit_status) {
       write_fit_tables(fits, out);
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
+      bool clogs = false;
+      for (const Series& s : fits.series) clogs = clogs || !s.clog_points.empty();
+      if (clogs) {
+        std::ifstream cmd(fs::path(out) / "clog_statistics.md");
+        std::cout << "\nClogging: the time to a clog over the replicas (Kaplan-Meier; runs that ended flowing censored)\n\n"
+                  << cmd.rdbuf();
+      }
       if (*authors_way) {
         std::ifstream bmd(fs::path(out) / "beverloo_fits_both_ways.md"), fmd(fs::path(out) / "crossover_fits_both_ways.md");
         std::cout << "\nBoth ways: beverloo's free fit (the default) beside the authors' bounded one\n\n" << bmd.rdbuf()
@@ -67,7 +74,7 @@ void add_report_commands(CLI::App& app, int& exit_status) {
         if (s.left_out > 0)
           std::printf("\n%s: %d replica(s) with a flow rate but no usable error (Q_err not > 0) left out of the fit\n",
                       terminal_safe(s.label).c_str(), s.left_out);
-      std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits, beverloo_fits_both_ways, crossover_fits_both_ways) and %s/*.csv, *.md\n",
+      std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits, beverloo_fits_both_ways, crossover_fits_both_ways, clog_statistics) and %s/*.csv, *.md\n",
                   terminal_safe(*dir).c_str(), terminal_safe(out).c_str());
       return exit_code::kOk;
     });

@@ -61,6 +61,7 @@ ReportFigure velocity_profiles(const FigureContext& c);
 ReportFigure drain_q_vs_w(const FigureContext& c);
 ReportFigure drain_collapse(const FigureContext& c);
 ReportFigure drain_curves(const FigureContext& c);
+ReportFigure clog_survival(const FigureContext& c);
 
 /// The data and plot clauses of Q(w) with fitted curves, and of the log-log collapse, for a
 /// list of series (shared by the continuous-flow and the draining-hopper figures).

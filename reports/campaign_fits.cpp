@@ -14,21 +14,26 @@
 #include "core/atomic_file.h"
 #include "core/text_escape.h"
 #include "orchestrator/sweep/sweep.h"
+#include "campaign_runs.h"
+#include "crossover_groups.h"
+#include "series_fits.h"
 #include "series_labels.h"
 
 namespace beverloo {
 namespace {
 using nlohmann::json;
 
-std::string fmt(double v, int digits = 4) {
+std::string fmt(double v, int digits = 4) { return table_number(v, digits); }
+
+}  // namespace
+
+std::string table_number(double v, int digits) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   if (std::isnan(v)) return "";
   char b[32];
   std::snprintf(b, sizeof b, "%.*g", digits, v);
   return b;
 }
-
-}  // namespace
 
 std::string format_lambda(double lambda) { return std::isinf(lambda) ? "inf" : fmt(lambda); }
 
@@ -53,287 +58,12 @@ int Series::clogged_points() const {
   return n;
 }
 
-namespace {
-/// Sorts a crossover group's finite-lambda series and fits the sigmoid to their beta.
-void fit_group(Crossover& g) {
-  std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
-  std::vector<double> l, b, e;
-  for (const Series* s : g.finite) {
-    l.push_back(s->lambda);
-    b.push_back(s->fit->beta);
-    e.push_back(s->fit->beta_err);
-  }
-  try {
-    g.fit = fit_crossover(g.dimension, l, b, e);
-  } catch (const FitError& err) {
-    g.message = err.what();
-  }
-  try {
-    g.fit_free = fit_crossover_free_plateaus(l, b, e);
-  } catch (const FitError& err) {
-    g.message_free = err.what();
-  }
-}
-}  // namespace
-
 CampaignFits fit_campaign(db::Database& db) {
+  CampaignRuns runs = read_campaign_runs(db);
   CampaignFits out;
-  db::Statement st = db.prepare(
-      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
-      "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
-      "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
-  std::map<std::string, std::size_t> index;
-  std::map<std::string, std::map<double, std::vector<std::tuple<double, double, bool, bool>>>> raw;
-  // per series, replica, w: (Q, Q_err) of a flowing job, for the run-to-run spread of the exponent
-  std::map<std::string, std::map<int, std::map<double, std::pair<double, double>>>> by_replica;
-  // per series and w: every run's time to its clog, or to its end (censored); and t_max
-  std::map<std::string, std::map<double, std::vector<SurvivalObservation>>> survival;
-  std::map<std::string, std::map<double, double>> t_max_of;
-  std::vector<json> series_jobs;               // per series, for labels that tell them apart
-  std::map<std::string, json> base_job_of;     // series key -> its job without zeta and mu
-  while (st.step()) {
-    json job = json::parse(st.get_text(1));
-    const double w = job["w"].get<double>();
-    json series_job = job;
-    for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
-    const std::string key = sha256_hex(series_job.dump());
-    if (!index.count(key)) {
-      Series s;
-      s.key = key;
-      s.model = job.value("model", std::string("sp"));
-      s.dimension = job["dimension"];
-      s.N = job["N"];
-      std::ostringstream stiffness;
-      if (s.is_dp()) {
-        const json& dp = job.at("dp");
-        s.n_v = dp.at("n_v");
-        s.K_a = dp.at("K_a");
-        s.K_l = dp.at("K_l");
-        s.K_b = dp.at("K_b");
-        s.E_c = dp.at("E_c");
-        stiffness << "DP " << (s.model == "dp_rough" ? "rough" : "smooth") << " K_l=" << fmt(s.K_l) << " K_b=" << fmt(s.K_b)
-                  << " E_c=" << fmt(s.E_c);
-      } else {
-        s.E_sp = job.at("E_sp");
-        stiffness << "SP E_sp=" << fmt(s.E_sp);
-      }
-      s.stiffness = stiffness.str();
-      s.zeta = job["zeta"];
-      s.mu = job["mu"];
-      s.drag_rate = job.value("drag_rate", 0.0);
-      if (job.contains("mu_n")) s.mu_n = job["mu_n"].get<double>();
-      if (job.contains("mu_t")) s.mu_t = job["mu_t"].get<double>();
-      s.lambda = derived::lambda(SimConfig::from_json(job)).value_or(NAN);
-      s.theta_left = job["theta_w_left_deg"];
-      s.theta_right = job["theta_w_right_deg"];
-      json base = series_job;
-      base.erase("zeta");
-      base.erase("mu");
-      base.erase("drag_rate");
-      base.erase("mu_n");  // a friction split belongs to the friction: limits match on mu and mu_n
-      base.erase("mu_t");
-      s.base_key = sha256_hex(base.dump());
-      base_job_of[key] = base;
-      series_jobs.push_back(series_job);
-      std::ostringstream label;
-      label << s.dimension << "D " << s.stiffness << " lambda=" << format_lambda(s.lambda) << " (zeta="
-            << fmt(s.zeta, 3);
-      if (s.drag_rate > 0) label << ", drag_rate=" << fmt(s.drag_rate, 3);
-      label << ", mu=" << fmt(s.mu, 3);
-      if (s.mu_n) label << ", mu_n=" << fmt(*s.mu_n, 3);
-      if (s.mu_t) label << ", mu_t=" << fmt(*s.mu_t, 3);
-      label << ")";
-      if (s.theta_left != 90 || s.theta_right != 90) label << " theta=" << fmt(s.theta_left) << "/" << fmt(s.theta_right);
-      label << " N=" << s.N;
-      s.drain = !job.value("reinject", true);
-      if (s.drain) label << " draining (Q = c0 t0)";
-      s.label = label.str();
-      index[key] = out.series.size();
-      out.series.push_back(s);
-    }
-    out.series[index[key]].job_keys.push_back(st.get_text(0));
-    raw[key][w].emplace_back(st.get_double(2), st.get_double(3), st.get_int(4) != 0, st.get_text(5) == "time_limit");
-    if (st.get_int(4) == 0 && st.get_double(2) > 0 && st.get_double(3) > 0)
-      by_replica[key][job.value("replica", 0)][w] = {st.get_double(2), st.get_double(3)};
-    {
-      const bool clogged = st.get_int(4) != 0;
-      const double end = static_cast<double>(st.get_int(7)) * st.get_double(8);  // steps x dt: the run's end
-      survival[key][w].push_back({clogged && st.get_double(6) >= 0 ? st.get_double(6) : end, clogged});
-      t_max_of[key][w] = job.contains("run") ? job["run"].value("t_max", 0.0) : 0.0;
-    }
-  }
-  {
-    std::vector<std::string> labels;
-    for (const Series& s : out.series) labels.push_back(s.label);
-    disambiguate_labels(labels, series_jobs);
-    for (std::size_t i = 0; i < labels.size(); ++i) out.series[i].label = labels[i];
-  }
-  for (Series& s : out.series) {
-    for (const auto& [w, reps] : raw[s.key]) {
-      SeriesPoint p;
-      p.w = w;
-      p.replicas = static_cast<int>(reps.size());
-      double sw = 0, swq = 0;
-      for (const auto& [Q, err, clogged, time_limited] : reps) {
-        p.time_limited += time_limited;
-        if (clogged) {
-          ++p.clogged;
-          continue;
-        }
-        if (Q > 0 && err > 0 && std::isfinite(Q) && std::isfinite(err)) {
-          sw += 1 / (err * err);
-          swq += Q / (err * err);
-        } else {
-          ++s.left_out;  // a rate without an error cannot be weighted: not a 0 +- 0 point
-        }
-      }
-      if (sw > 0) {
-        p.Q = swq / sw;
-        p.Q_err = 1 / std::sqrt(sw);
-      }
-      if (sw > 0 || p.clogged > 0) s.points.push_back(p);
-    }
-    std::vector<double> w, Q, e;
-    for (const auto& p : s.points)
-      if (p.flowing()) {
-        w.push_back(p.w);
-        Q.push_back(p.Q);
-        e.push_back(p.Q_err);
-      }
-    try {
-      s.fit = fit_beverloo(w, Q, e);
-    } catch (const FitError& err) {
-      s.message = err.what();
-    }
-    // The run-to-run spread: each replica (seed) fitted alone where every one has the widths the
-    // pooled fit used; the sample standard deviation of their betas, beside the fit's own error
-    // (the pooled fit's error says how well one set of points fixes beta, not how far another
-    // seed's set would move it).
-    if (s.fit) {
-      const auto& reps = by_replica[s.key];
-      std::vector<double> betas;
-      for (const auto& [replica, pts] : reps) {
-        if (pts.size() != w.size()) continue;
-        std::vector<double> rw, rq, re;
-        for (const auto& [wr, qe] : pts) {
-          rw.push_back(wr);
-          rq.push_back(qe.first);
-          re.push_back(qe.second);
-        }
-        try {
-          betas.push_back(fit_beverloo(rw, rq, re).beta);
-        } catch (const FitError&) {
-        }
-      }
-      s.replica_fits = static_cast<int>(betas.size());
-      if (betas.size() >= 2) {
-        double mean = 0, ss = 0;
-        for (double b : betas) mean += b / betas.size();
-        for (double b : betas) ss += (b - mean) * (b - mean);
-        s.beta_replica_spread = std::sqrt(ss / (betas.size() - 1));
-      }
-    }
-    if (!s.rate_is_c0()) {
-      bool any_clog = false;
-      for (const auto& [wv, runs] : survival[s.key])
-        for (const SurvivalObservation& o : runs) any_clog = any_clog || o.clogged;
-      if (any_clog)
-        for (const auto& [wv, runs] : survival[s.key]) s.clog_points.push_back({wv, t_max_of[s.key][wv], kaplan_meier(runs)});
-    }
-    if (!s.rate_is_c0()) {
-      try {
-        s.authors_fit = fit_beverloo_bounded(w, Q, BoundedFitOptions::authors());
-      } catch (const FitError& err) {
-        s.authors_message = err.what();
-      }
-    }
-  }
-  // crossover groups: series sharing everything but zeta/mu, with the same drag for finite lambda
-  std::map<std::string, Crossover> groups;
-  for (const Series& s : out.series) {
-    if (!(s.zeta > 0) || s.drag_rate > 0 || s.drain) continue;  // lambda = 0 joins below as a limit
-    std::string gkey = s.base_key + "|zeta=" + fmt(s.zeta, 12);
-    if (s.mu_n) gkey += "|mu_n=" + fmt(*s.mu_n, 12);  // (absent for the text's model: keys as before)
-    if (s.mu_t) gkey += "|mu_t=" + fmt(*s.mu_t, 12);
-    Crossover& g = groups[gkey];
-    g.key = sha256_hex(gkey);
-    g.dimension = s.dimension;
-    g.label = std::to_string(s.dimension) + "D " + s.stiffness + " zeta=" + fmt(s.zeta, 3) + " N=" + std::to_string(s.N);
-    if (std::isinf(s.lambda))
-      g.limit_inf = &s;
-    else if (s.fit)
-      g.finite.push_back(&s);
-  }
-  for (auto& [gkey, g] : groups) {
-    const std::string zeta_part = gkey.substr(gkey.find("|zeta=") + 6);
-    const double scale = std::stod(zeta_part.substr(0, zeta_part.find('|'))) * std::sqrt(10.0);
-    for (const Series& s : out.series)  // lambda = 0 at the same dissipation scale (mu = 10 sqrt 10 s)
-      if (s.zeta == 0 && s.base_key == gkey.substr(0, gkey.find('|')) &&
-          std::fabs(s.mu / (10 * std::sqrt(10.0)) - scale) <= 1e-9 * scale)
-        g.limit0 = &s;
-    fit_group(g);
-    out.crossovers.push_back(g);
-  }
-  // The authors' lambda axis (docs/authors-model.md): drag as a rate times the mass, and
-  // lambda = drag_rate M(sigma_avg) / mu_t. Their Fig. 4 varies it along two branches, the drag
-  // at a fixed friction and then the friction at a fixed drag (Matlab-process oop/paper.m, bVec
-  // and vVec), and plots both as one beta(lambda): so a group is every rate-drag series with
-  // friction sharing everything else (the form of the friction, mu_n, included). Its limits:
-  // lambda = 0, the friction of its lowest-lambda series without drag; lambda = inf, the drag of
-  // its highest-lambda series without friction (else any rate-drag series without friction).
-  std::map<std::string, Crossover> by_rate_drag;
-  for (const Series& s : out.series) {
-    if (!(s.drag_rate > 0) || s.zeta != 0 || !(s.mu > 0) || s.drain) continue;
-    const std::string gkey = s.base_key + "|rate_drag|mu_n=" + (s.mu_n ? fmt(*s.mu_n, 12) : "mu");
-    Crossover& g = by_rate_drag[gkey];
-    g.key = sha256_hex(gkey);
-    g.dimension = s.dimension;
-    if (s.fit) g.finite.push_back(&s);
-  }
-  for (auto& [gkey, g] : by_rate_drag) {
-    const std::string base = gkey.substr(0, gkey.find('|'));
-    const Series* lowest = nullptr;
-    const Series* highest = nullptr;
-    for (const Series* s : g.finite) {
-      if (!lowest || s->lambda < lowest->lambda) lowest = s;
-      if (!highest || s->lambda > highest->lambda) highest = s;
-    }
-    std::set<double> frictions, drags;
-    for (const Series* s : g.finite) {
-      frictions.insert(s->mu);
-      drags.insert(s->drag_rate);
-    }
-    const Series* any_inf = nullptr;
-    for (const Series& s : out.series) {
-      if (s.base_key != base || s.drain) continue;
-      if (lowest && s.zeta == 0 && s.drag_rate == 0 && s.mu == lowest->mu && s.mu_n == lowest->mu_n &&
-          s.mu_t == lowest->mu_t)
-        g.limit0 = &s;
-      if (s.mu == 0 && s.zeta == 0 && s.drag_rate > 0) {
-        if (highest && s.drag_rate == highest->drag_rate) g.limit_inf = &s;
-        if (!any_inf) any_inf = &s;
-      }
-    }
-    if (!g.limit_inf) g.limit_inf = any_inf;
-    const Series* any = lowest ? lowest : g.limit0;
-    g.label = std::to_string(any ? any->dimension : g.dimension) + "D " + (any ? any->stiffness : std::string()) +
-              (frictions.size() == 1   ? " mu=" + fmt(*frictions.begin(), 4) + " (drag rate)"
-               : drags.size() == 1     ? " drag_rate=" + fmt(*drags.begin(), 4) + " (mu varied)"
-                                       : std::string(" (drag rate and mu varied)")) +
-              (any ? " N=" + std::to_string(any->N) : std::string());
-    fit_group(g);
-    out.crossovers.push_back(g);
-  }
-  // groups that differ in something other than their label's fields say so, as series do
-  std::vector<std::string> labels;
-  std::vector<json> bases;
-  for (const Crossover& g : out.crossovers) {
-    const Series* any = !g.finite.empty() ? g.finite.front() : g.limit0 ? g.limit0 : g.limit_inf;
-    labels.push_back(g.label);
-    bases.push_back(any ? base_job_of[any->key] : json::object());
-  }
-  disambiguate_labels(labels, bases);
-  for (std::size_t i = 0; i < labels.size(); ++i) out.crossovers[i].label = labels[i];
+  out.series = std::move(runs.series);
+  for (Series& s : out.series) fit_series(s, runs.runs[s.key]);
+  out.crossovers = crossover_groups(out.series, runs.base_job_of);
   add_experiment_series(db, out);
   return out;
 }
@@ -569,7 +299,7 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     auto measured = [](const Series* s) { return s && s->fit ? fmt(s->fit->beta) + " ± " + fmt(s->fit->beta_err, 2) : std::string("-"); };
     fmd << "| " << markdown_cell(g.label) << " | "
         << (g.fit ? fmt(g.fit->lambda_c) + " ± " + fmt(g.fit->lambda_c_err, 2) + " | " + fmt(g.fit->chi2_red, 3)
-                  : "no fit | ")
+                  : "no fit: " + markdown_cell(g.message) + " | ")
         << " | ";
     if (g.fit_free) {
       const CrossoverFit& f = *g.fit_free;

@@ -38,6 +38,8 @@ fs::path make_fixture(const double lambda_c, const double b) {
                       {"sweep", {{"union", {{{"product", {{{"E_sp", {100, 1000}}}, {{"lambda", {0, "inf"}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             {{"product", {{{"E_sp", 100}}, {{"lambda", {{"logspace", {-3, 1, 9}}}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             {{"E_sp", 50}, {"lambda", 0.5}, {"w", {4, 5, 6}}},
+                                            // near k: four seeds each, two of which clog (the clog statistics)
+                                            {{"E_sp", 1000}, {"lambda", 0}, {"w", {2.5, 3}}, {"seed", {1, 2, 3, 4}}},
                                             {{"product", {{{"model", "dp_smooth"}}, {{"dp.K_l", {1, 10}}}, {{"dp.K_b", {0.1, 10}}},
                                                           {{"lambda", "inf"}}, {{"w", {4, 5, 6, 7, 8}}}}}}}}}}};
   const Sweep s = Sweep::parse(sweep, "fixture");
@@ -53,9 +55,11 @@ fs::path make_fixture(const double lambda_c, const double b) {
                                               0.2 * std::log10(j["dp"]["K_l"].get<double>());
     const double C = 0.4;
     const double Q = beverloo_model(w, C, k, beta);
-    const json summary = {{"status", "converged"}, {"Q", Q}, {"Q_err", 0.02 * Q}, {"Q_rel_err", 0.02},
-                          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
-                          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
+    const bool clogs = w < 3.5 && j.value("seed", 0) % 2 == 1;
+    const json summary = {{"status", clogs ? "clogged" : "converged"}, {"Q", clogs ? 0.0 : Q}, {"Q_err", clogs ? 0.0 : 0.02 * Q},
+                          {"Q_rel_err", 0.02}, {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500},
+                          {"exits_total", 600}, {"clogged", clogs}, {"clog_time", clogs ? 30.0 * j.value("seed", 0) : -1.0},
+                          {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
                           {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
                           {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
                           {"particle_steps_per_second", 3e7}};
@@ -136,7 +140,7 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
     EXPECT_NE(index.find(f.name + ".svg"), std::string::npos) << f.name;
     EXPECT_NE(index.find(f.name + ".png"), std::string::npos) << f.name;
   }
-  EXPECT_EQ(made, 7);  // Q(w), collapse, beta(lambda), k(E_sp), k(K_b), k(K_l, K_b), profiles
+  EXPECT_EQ(made, 8);  // Q(w), collapse, beta(lambda), k(E_sp), k(K_b), k(K_l, K_b), profiles, clog survival
   // the fits, through the SQL views
   db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
   db::Statement st = db.prepare("SELECT beta, k, C FROM beverloo_fits WHERE E_sp = 1000 AND mu = 0");
@@ -169,6 +173,15 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   EXPECT_EQ(x.get_int(4), 9);
   EXPECT_TRUE(fs::exists(out / "beverloo_fits.csv"));
   EXPECT_TRUE(fs::exists(out / "crossover_fits.md"));
+  // the seeds near k: two of four clog at w = 2.5 and 3 (at 30 and 90 t0), the others run to 200 t0
+  db::Statement clog = db.prepare("SELECT runs, clogs, p_clog, median_time FROM clog_statistics WHERE w = 2.5");
+  ASSERT_TRUE(clog.step());
+  EXPECT_EQ(clog.get_int(0), 4);
+  EXPECT_EQ(clog.get_int(1), 2);
+  EXPECT_NEAR(clog.get_double(2), 0.5, 1e-12);  // S = 3/4 after 30 t0, 3/4 x 2/3 after 90 t0
+  EXPECT_NEAR(clog.get_double(3), 90, 1e-12);
+  EXPECT_EQ(db.scalar_int("SELECT count(*) FROM clog_statistics WHERE clogs = 0 AND p_clog = 0"), 5)
+      << "the series' other widths: no clog";
   fs::remove_all(dir);
 }
 

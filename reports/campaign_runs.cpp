@@ -1,0 +1,107 @@
+#include "campaign_runs.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/digest.h"
+#include "engine/config.h"
+#include "engine/parameters.h"
+#include "series_labels.h"
+
+namespace beverloo {
+namespace {
+using nlohmann::json;
+std::string fmt(double v, int digits = 4) { return table_number(v, digits); }
+}  // namespace
+
+CampaignRuns read_campaign_runs(db::Database& db) {
+  CampaignRuns out;
+  db::Statement st = db.prepare(
+      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
+      "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
+      "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
+  std::map<std::string, std::size_t> index;
+  std::vector<json> series_jobs;  // per series, for labels that tell them apart
+  while (st.step()) {
+    json job = json::parse(st.get_text(1));
+    const double w = job["w"].get<double>();
+    json series_job = job;
+    for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
+    const std::string key = sha256_hex(series_job.dump());
+    if (!index.count(key)) {
+      Series s;
+      s.key = key;
+      s.model = job.value("model", std::string("sp"));
+      s.dimension = job["dimension"];
+      s.N = job["N"];
+      std::ostringstream stiffness;
+      if (s.is_dp()) {
+        const json& dp = job.at("dp");
+        s.n_v = dp.at("n_v");
+        s.K_a = dp.at("K_a");
+        s.K_l = dp.at("K_l");
+        s.K_b = dp.at("K_b");
+        s.E_c = dp.at("E_c");
+        stiffness << "DP " << (s.model == "dp_rough" ? "rough" : "smooth") << " K_l=" << fmt(s.K_l) << " K_b=" << fmt(s.K_b)
+                  << " E_c=" << fmt(s.E_c);
+      } else {
+        s.E_sp = job.at("E_sp");
+        stiffness << "SP E_sp=" << fmt(s.E_sp);
+      }
+      s.stiffness = stiffness.str();
+      s.zeta = job["zeta"];
+      s.mu = job["mu"];
+      s.drag_rate = job.value("drag_rate", 0.0);
+      if (job.contains("mu_n")) s.mu_n = job["mu_n"].get<double>();
+      if (job.contains("mu_t")) s.mu_t = job["mu_t"].get<double>();
+      s.lambda = derived::lambda(SimConfig::from_json(job)).value_or(NAN);
+      s.theta_left = job["theta_w_left_deg"];
+      s.theta_right = job["theta_w_right_deg"];
+      json base = series_job;
+      base.erase("zeta");
+      base.erase("mu");
+      base.erase("drag_rate");
+      base.erase("mu_n");  // a friction split belongs to the friction: limits match on mu and mu_n
+      base.erase("mu_t");
+      s.base_key = sha256_hex(base.dump());
+      out.base_job_of[key] = base;
+      series_jobs.push_back(series_job);
+      std::ostringstream label;
+      label << s.dimension << "D " << s.stiffness << " lambda=" << format_lambda(s.lambda) << " (zeta="
+            << fmt(s.zeta, 3);
+      if (s.drag_rate > 0) label << ", drag_rate=" << fmt(s.drag_rate, 3);
+      label << ", mu=" << fmt(s.mu, 3);
+      if (s.mu_n) label << ", mu_n=" << fmt(*s.mu_n, 3);
+      if (s.mu_t) label << ", mu_t=" << fmt(*s.mu_t, 3);
+      label << ")";
+      if (s.theta_left != 90 || s.theta_right != 90) label << " theta=" << fmt(s.theta_left) << "/" << fmt(s.theta_right);
+      label << " N=" << s.N;
+      s.drain = !job.value("reinject", true);
+      if (s.drain) label << " draining (Q = c0 t0)";
+      s.label = label.str();
+      index[key] = out.series.size();
+      out.series.push_back(s);
+    }
+    out.series[index[key]].job_keys.push_back(st.get_text(0));
+    RunRecord r;
+    r.w = w;
+    r.replica = job.value("replica", 0);
+    r.Q = st.get_double(2);
+    r.Q_err = st.get_double(3);
+    r.clogged = st.get_int(4) != 0;
+    r.time_limited = st.get_text(5) == "time_limit";
+    r.clog_time = st.get_double(6);
+    r.end_time = static_cast<double>(st.get_int(7)) * st.get_double(8);
+    r.t_max = job.contains("run") ? job["run"].value("t_max", 0.0) : 0.0;
+    out.runs[key].push_back(r);
+  }
+  {
+    std::vector<std::string> labels;
+    for (const Series& s : out.series) labels.push_back(s.label);
+    disambiguate_labels(labels, series_jobs);
+    for (std::size_t i = 0; i < labels.size(); ++i) out.series[i].label = labels[i];
+  }
+  return out;
+}
+
+}  // namespace beverloo

@@ -1,0 +1,36 @@
+#pragma once
+/// \file campaign_runs.h
+/// \brief A campaign's finished jobs read from its database and grouped into series (every
+/// parameter but w, the replica and the seed equal), labelled so that no two read alike; the
+/// first step of `beverloo fit` (reports/campaign_fits.h).
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "campaign_fits.h"
+
+namespace beverloo {
+
+/// One finished job as the fits need it.
+struct RunRecord {
+  double w = 0;
+  int replica = 0;
+  double Q = 0, Q_err = 0;
+  bool clogged = false, time_limited = false;
+  double clog_time = -1;  ///< the last exit before the clog (t0); -1 without a clog
+  double end_time = 0;    ///< steps x dt: where the run ended (t0)
+  double t_max = 0;       ///< its run.t_max
+};
+
+struct CampaignRuns {
+  std::vector<Series> series;                          ///< in the campaign's point order, labelled, not yet fitted
+  std::map<std::string, std::vector<RunRecord>> runs;  ///< by series key, in point order
+  std::map<std::string, nlohmann::json> base_job_of;   ///< series key -> its job without the dissipation parameters
+};
+
+/// The latest campaign's jobs with a result.
+CampaignRuns read_campaign_runs(db::Database& db);
+
+}  // namespace beverloo

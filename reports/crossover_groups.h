@@ -1,0 +1,22 @@
+#pragma once
+/// \file crossover_groups.h
+/// \brief beta(lambda) groups: the series that differ only in lambda, each with its lambda = 0
+/// and lambda = inf limits, fitted with the paper's fixed plateaus and with free ones. Two
+/// lambda axes: the text's (zeta and mu at a fixed dissipation scale) and the authors' (drag as
+/// a rate times the mass, both of their branches in one group).
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "campaign_fits.h"
+
+namespace beverloo {
+
+/// The groups of the fitted series; base_job_of: each series' job without the dissipation
+/// parameters (CampaignRuns), which tells groups with equal labels apart.
+std::vector<Crossover> crossover_groups(const std::vector<Series>& series,
+                                        const std::map<std::string, nlohmann::json>& base_job_of);
+
+}  // namespace beverloo

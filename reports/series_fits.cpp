@@ -1,0 +1,110 @@
+#include "series_fits.h"
+
+#include <cmath>
+#include <map>
+
+namespace beverloo {
+namespace {
+
+/// Replicas at each w pooled by inverse-variance weights; clogged ones counted, not pooled.
+void pool_points(Series& s, const std::vector<RunRecord>& runs) {
+  std::map<double, std::vector<const RunRecord*>> by_w;
+  for (const RunRecord& r : runs) by_w[r.w].push_back(&r);
+  for (const auto& [w, reps] : by_w) {
+    SeriesPoint p;
+    p.w = w;
+    p.replicas = static_cast<int>(reps.size());
+    double sw = 0, swq = 0;
+    for (const RunRecord* r : reps) {
+      p.time_limited += r->time_limited;
+      if (r->clogged) {
+        ++p.clogged;
+        continue;
+      }
+      if (r->Q > 0 && r->Q_err > 0 && std::isfinite(r->Q) && std::isfinite(r->Q_err)) {
+        sw += 1 / (r->Q_err * r->Q_err);
+        swq += r->Q / (r->Q_err * r->Q_err);
+      } else {
+        ++s.left_out;  // a rate without an error cannot be weighted: not a 0 +- 0 point
+      }
+    }
+    if (sw > 0) {
+      p.Q = swq / sw;
+      p.Q_err = 1 / std::sqrt(sw);
+    }
+    if (sw > 0 || p.clogged > 0) s.points.push_back(p);
+  }
+}
+
+/// The run-to-run spread: each replica (seed) fitted alone where it has every width the pooled
+/// fit used; the sample standard deviation of their betas, beside the fit's own error (the
+/// pooled fit's error says how well one set of points fixes beta, not how far another seed's
+/// set would move it).
+void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t widths) {
+  std::map<int, std::map<double, const RunRecord*>> by_replica;
+  for (const RunRecord& r : runs)
+    if (!r.clogged && r.Q > 0 && r.Q_err > 0) by_replica[r.replica][r.w] = &r;
+  std::vector<double> betas;
+  for (const auto& [replica, pts] : by_replica) {
+    if (pts.size() != widths) continue;
+    std::vector<double> rw, rq, re;
+    for (const auto& [w, r] : pts) {
+      rw.push_back(w);
+      rq.push_back(r->Q);
+      re.push_back(r->Q_err);
+    }
+    try {
+      betas.push_back(fit_beverloo(rw, rq, re).beta);
+    } catch (const FitError&) {
+    }
+  }
+  s.replica_fits = static_cast<int>(betas.size());
+  if (betas.size() >= 2) {
+    double mean = 0, ss = 0;
+    for (double b : betas) mean += b / betas.size();
+    for (double b : betas) ss += (b - mean) * (b - mean);
+    s.beta_replica_spread = std::sqrt(ss / (betas.size() - 1));
+  }
+}
+
+/// Per w, Kaplan-Meier over the replicas, for every w of a series in which some run clogged.
+void clog_statistics(Series& s, const std::vector<RunRecord>& runs) {
+  std::map<double, std::vector<SurvivalObservation>> by_w;
+  std::map<double, double> t_max;
+  bool any_clog = false;
+  for (const RunRecord& r : runs) {
+    by_w[r.w].push_back({r.clogged && r.clog_time >= 0 ? r.clog_time : r.end_time, r.clogged});
+    t_max[r.w] = r.t_max;
+    any_clog = any_clog || r.clogged;
+  }
+  if (!any_clog) return;
+  for (const auto& [w, obs] : by_w) s.clog_points.push_back({w, t_max[w], kaplan_meier(obs)});
+}
+
+}  // namespace
+
+void fit_series(Series& s, const std::vector<RunRecord>& runs) {
+  pool_points(s, runs);
+  std::vector<double> w, Q, e;
+  for (const auto& p : s.points)
+    if (p.flowing()) {
+      w.push_back(p.w);
+      Q.push_back(p.Q);
+      e.push_back(p.Q_err);
+    }
+  try {
+    s.fit = fit_beverloo(w, Q, e);
+  } catch (const FitError& err) {
+    s.message = err.what();
+  }
+  if (s.fit) replica_spread(s, runs, w.size());
+  if (s.rate_is_c0()) return;  // a drain's c0 t0: no clog statistics, no authors' fit
+  clog_statistics(s, runs);
+  try {
+    s.authors_fit = fit_beverloo_bounded(w, Q, BoundedFitOptions::authors());
+  } catch (const FitError& err) {
+    s.authors_message = err.what();
+  }
+}
+
+}  // namespace beverloo

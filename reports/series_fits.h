@@ -1,0 +1,14 @@
+#pragma once
+/// \file series_fits.h
+/// \brief One series' fits from its runs: the pooled points (replicas by inverse-variance
+/// weights, clogged ones counted apart), the Beverloo fit, the run-to-run spread of beta over
+/// replicas, the authors' bounded fit beside it, and the clog statistics per w.
+#include <vector>
+
+#include "campaign_runs.h"
+
+namespace beverloo {
+
+void fit_series(Series& s, const std::vector<RunRecord>& runs);
+
+}  // namespace beverloo

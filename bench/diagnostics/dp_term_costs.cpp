@@ -9,6 +9,7 @@
 
 #include "engine/config.h"
 #include "engine/forces/force_term.h"
+#include "engine/dp/dp_system.h"
 #include "engine/protocol/hopper_run.h"
 
 using namespace beverloo;
@@ -30,6 +31,9 @@ int main(int argc, char** argv) {
   ParticleState<2>& s = model.term_state(run.state());
   const int n = s.size();
   std::printf("%d vertices, dt %.3g\n", n, dt);
+  if (DpSystem* dp = run.dp())
+    std::printf("vertex list: %.2f pairs per vertex (skin %.3g)\n", double(dp->forces().list().pairs()) / n,
+                dp->forces().list().skin());
   VecArray<2> f(n, Vec<2>::Zero());
   double total = 0;
   std::vector<std::pair<std::string, double>> rows;

@@ -54,6 +54,7 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   vertex_reach_.assign(p.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape.l0[1] - reach_covered_));
   list_.set_extra_reach(&vertex_reach_);
   corner_edges_.reserve(p.vertices());
+  fold_vertices_.reserve(p.vertices());
   // a wall contact wider than the pair contact (dp.wall_width): the wall masks reach as far
   if (c.dp.wall_width) list_.set_wall_diameters({shape.wall[0], shape.wall[1]});
 }
@@ -73,7 +74,7 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
   if (edge_outgrown_) reset_edge_bounds(s);
   list_.update(s, hopper_);
   if (smooth_) {
-    const TermOutput o = smooth_->accumulate(s, s.f);
+    const TermOutput o = smooth_->accumulate_with_folds(s, s.f, fold_vertices_);
     r.U_contact = o.energy;
     r.P_friction = o.power;
     r.max_overlap = smooth_->max_overlap();
@@ -99,6 +100,7 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
   double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
   bool outgrown = false;
   corner_edges_.clear();
+  fold_vertices_.clear();
   for (int m = 0; m < poly_.polygons(); ++m) {
     edges_.measure(poly_, s.x, m);
     area_.add_polygon(s, s.f, m, U_area);
@@ -110,6 +112,9 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
       const int i = edges_.first + k;
       outgrown = outgrown || edges_.e[k].squaredNorm() > edge_bound_[i] * edge_bound_[i];
       perimeter += edges_.len[k];
+      // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
+      if (smooth_ && smooth_->fold_may_act(edges_.e[poly_.prev[i] - edges_.first], edges_.e[k], s.species[i]))
+        fold_vertices_.push_back(i);  // capacity reserved: no allocation
     }
     // most polygons are far from the orifice: one test for the polygon, then one per edge
     if (!corners_.polygon_may_touch(s, edges_.first, perimeter)) continue;

@@ -91,6 +91,7 @@ class DpForceField {
   PolygonEdges edges_;            ///< the polygon at hand in shape_pass
   bool edge_outgrown_ = false;    ///< set by shape_pass
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing
+  std::vector<int> fold_vertices_; ///< vertices at which the smooth contact's fold pairs may act, increasing
 };
 
 }  // namespace beverloo

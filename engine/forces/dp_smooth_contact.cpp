@@ -126,7 +126,7 @@ void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double& energ
 }
 
 template <DpSmoothContact::Mode kMode>
-TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) const {
+TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices) const {
   double energy = 0, power = 0, max_ov = 0;
   const int n = s.size();
   const View view{s.x.data(), s.v.data(),  s.species.data(), p_.next.data(), p_.prev.data(), p_.owner.data(),
@@ -146,19 +146,27 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
   // eps (1 - l/width)^2), which keeps it from collapsing through zero, another way to fold.
   // Not for the rough core (l0/2 is within reach of a compressed edge, and the core has no
   // caps): the rough model has a narrower term of its own for this (rough_fold_barrier).
-  for (int k = 0; folds_ && k < n; ++k) {
-    // Fast exit for the usual vertex: where the two edges at k meet at more than 90 degrees
-    // (u . v < 0), each fold vertex projects beyond the shared end k of the other edge (t > 1
-    // for edge prev -> k, t < 0 for k -> next; t - 1 and -t have the sign of -u . v), so only
-    // the caps can act, and they act only on an edge shorter than the width. The cap tests
-    // below compare the same squared lengths, so skipping changes no result (but for rounding
-    // of t at exactly 90 degrees, where the slab's distance is the cap's).
-    const Vec<2> u = view.x[view.prev[k]] - view.x[k];
-    const Vec<2> v = view.x[view.next[k]] - view.x[k];
-    const double w = view.width[view.species[k]];
-    if (u.dot(v) < 0 && u.squaredNorm() >= w * w && v.squaredNorm() >= w * w) continue;
+  auto fold_pairs_at = [&](int k) {
     edge_vertex<kMode>(view, view.prev[k], view.next[k], energy, power, max_ov, FoldCap::AtEnd);  // edge prev(k) -> k
     edge_vertex<kMode>(view, k, view.prev[k], energy, power, max_ov, FoldCap::AtStart);         // edge k -> next(k)
+  };
+  if (fold_vertices) {
+    for (const int k : *fold_vertices) fold_pairs_at(k);
+  } else {
+    for (int k = 0; folds_ && k < n; ++k) {
+      // Fast exit for the usual vertex: where the two edges at k meet at more than 90 degrees
+      // (u . v < 0), each fold vertex projects beyond the shared end k of the other edge (t > 1
+      // for edge prev -> k, t < 0 for k -> next; t - 1 and -t have the sign of -u . v), so only
+      // the caps can act, and they act only on an edge shorter than the width. The cap tests
+      // below compare the same squared lengths, so skipping changes no result (but for rounding
+      // of t at exactly 90 degrees, where the slab's distance is the cap's). fold_may_act()
+      // is this test on the edge vectors (u = -(r_k - r_prev) exactly).
+      const Vec<2> u = view.x[view.prev[k]] - view.x[k];
+      const Vec<2> v = view.x[view.next[k]] - view.x[k];
+      const double w = view.width[view.species[k]];
+      if (u.dot(v) < 0 && u.squaredNorm() >= w * w && v.squaredNorm() >= w * w) continue;
+      fold_pairs_at(k);
+    }
   }
   if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;
   return {energy, power};
@@ -166,6 +174,12 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f) cons
 
 TermOutput DpSmoothContact::accumulate(const ParticleState<2>& s, VecArray<2>& f) {
   return (friction_on_ && law_.active()) ? loop<Mode::RepulsionAndFriction>(s, f) : loop<Mode::Repulsion>(s, f);
+}
+
+TermOutput DpSmoothContact::accumulate_with_folds(const ParticleState<2>& s, VecArray<2>& f,
+                                                  const std::vector<int>& fold_vertices) {
+  return (friction_on_ && law_.active()) ? loop<Mode::RepulsionAndFriction>(s, f, &fold_vertices)
+                                         : loop<Mode::Repulsion>(s, f, &fold_vertices);
 }
 
 void DpSmoothContact::friction_forces(const ParticleState<2>& s, VecArray<2>& out) const {

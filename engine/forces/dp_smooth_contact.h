@@ -35,6 +35,7 @@
 /// same with a and b swapped; so every edge-vertex pair is counted exactly once, and a
 /// stretched edge widens the search only around its own vertices.
 #include <array>
+#include <vector>
 #include <optional>
 #include <utility>
 
@@ -92,6 +93,20 @@ class DpSmoothContact final : public ForceTerm<2> {
 
   std::string_view name() const override { return name_; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override;
+  /// The same sum, with the fold pairs tested only at the listed vertices (increasing): those
+  /// where fold_may_act() holds, which DpForceField finds while it measures the edges for the
+  /// shape terms (at most vertices are none). The same bits as accumulate() for the same state.
+  TermOutput accumulate_with_folds(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>& fold_vertices);
+  /// Whether the fold pairs at a vertex can act, from its two edges e_in (prev -> k) and e_out
+  /// (k -> next) and its species: where they meet at more than 90 degrees and both are at
+  /// least the width long, neither fold vertex is in the other edge's slab nor within a cap
+  /// (the fast exit of the fold loop, written as the loop writes it: u = -e_in, v = e_out).
+  bool fold_may_act(const Vec<2>& e_in, const Vec<2>& e_out, int species) const {
+    if (!folds_) return false;
+    const Vec<2> u = -e_in;
+    const double w = width_[species];
+    return !(u.dot(e_out) < 0 && u.squaredNorm() >= w * w && e_out.squaredNorm() >= w * w);
+  }
   /// Friction force on each vertex alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
   void set_friction_enabled(bool on) { friction_on_ = on; }
@@ -107,7 +122,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// that chooses another yet; one would make this a registry row as SpContact does.
   using NormalLaw = HarmonicOverlap;
   template <Mode kMode>
-  TermOutput loop(const ParticleState<2>& s, VecArray<2>& f) const;
+  TermOutput loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices = nullptr) const;
   struct View;  ///< the state's and the polygons' arrays as pointers (the .cpp)
   /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.
   template <Mode kMode>

@@ -533,8 +533,9 @@ TEST(DpForces, ShapeEnergiesAreInvariantUnderRigidMotionAndZeroForReferencePolyg
   EXPECT_NEAR(polygon_area(regular.poly, regular.verts.x, 1), regular.shape.a0[1], 1e-12);
 }
 
-// DpForceField::compute runs the shape terms polygon by polygon over edges measured once and
-// the orifice corners only on the edges near them; each vertex must still sum the same numbers
+// DpForceField::compute runs the shape terms polygon by polygon over edges measured once, the
+// orifice corners only on the edges near them and the smooth contact's fold pairs only at the
+// vertices where a polygon folds (found in the same pass); each vertex must still sum the same numbers
 // in the same order as the terms one after another, so the forces and energies are equal bit
 // for bit (the results of every DP job rest on this).
 TEST(DpForces, FusedShapePassEqualsTheTermsOneAfterAnother) {
@@ -550,6 +551,14 @@ TEST(DpForces, FusedShapePassEqualsTheTermsOneAfterAnother) {
     const Vec<2> outward = Vec<2>(e[1], -e[0]).normalized();
     const Vec<2> shift = Vec<2>(0.5 * c.w, 0) - 0.5 * (fx.verts.x[a] + fx.verts.x[b]) - 0.02 * fx.shape.l0[1] * outward;
     for (int i = fx.poly.first[m]; i < fx.poly.first[m + 1]; ++i) fx.verts.x[i] += shift;
+    // polygon 0 folded back at vertex 1: vertex 2 lies beside edge 0 -> 1, 0.05 l0 off its line
+    // and inside its slab, so the fold pairs at vertex 1 act
+    {
+      const int v0 = fx.poly.first[0], v1 = v0 + 1, v2 = v0 + 2;
+      const Vec<2> e = fx.verts.x[v1] - fx.verts.x[v0];
+      const Vec<2> inward = Vec<2>(-e[1], e[0]).normalized();
+      fx.verts.x[v2] = fx.verts.x[v0] + 0.6 * e + 0.05 * fx.shape.l0[0] * inward;
+    }
     Rng rng(5);
     for (auto& v : fx.verts.v) v = Vec<2>(rng.uniform(-1, 1), rng.uniform(-1, 1));
     const Hopper<2> h = make_hopper<2>(fx.c);

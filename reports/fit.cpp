@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string>
 
 namespace beverloo {
 namespace {
@@ -128,33 +129,57 @@ BeverlooFit fit_beverloo(const std::vector<double>& w, const std::vector<double>
   return f;
 }
 
-CrossoverFit fit_crossover(int d, const std::vector<double>& lambda, const std::vector<double>& beta,
-                           const std::vector<double>& beta_err) {
-  check_inputs("crossover fit", lambda, beta, beta_err, 3);
+namespace {
+
+void check_lambdas(const std::vector<double>& lambda) {
   for (double l : lambda)
     if (!(l > 0) || !std::isfinite(l)) throw FitError("crossover fit: lambda must be finite and > 0 (the limits are not fitted)");
-  // Parameters (log10 lambda_c, log b): b > 0.
-  Problem pr{lambda.size(), 2, [&](std::size_t i, const double* x) {
-               return d - 1 - 0.5 * std::tanh((std::log10(lambda[i]) - x[0]) / std::exp(x[1]));
-             }, &beta};
+}
+
+/// A crossover solve from a grid of starts in (log10 lambda_c, log b), the further parameters
+/// starting at `rest`; the best by chi^2.
+Solution solve_crossover(Problem& pr, const std::vector<double>& lambda, const std::vector<double>& rest,
+                         const std::vector<double>& err, const std::string& what) {
   const double lo = std::log10(*std::min_element(lambda.begin(), lambda.end()));
   const double hi = std::log10(*std::max_element(lambda.begin(), lambda.end()));
   Solution best;
   for (double frac : {0.5, 0.25, 0.75})
     for (double b0 : {0.5, 1.0, 2.0}) {
-      Solution s = solve(pr, {lo + frac * (hi - lo), std::log(b0)}, beta_err);
+      std::vector<double> x0 = {lo + frac * (hi - lo), std::log(b0)};
+      x0.insert(x0.end(), rest.begin(), rest.end());
+      Solution s = solve(pr, x0, err);
       if (s.ok && s.chi2 < best.chi2) best = s;
     }
-  if (!best.ok) throw FitError("crossover fit: the solver did not converge from any start");
+  if (!best.ok) throw FitError(what + ": the solver did not converge from any start");
+  return best;
+}
+
+/// lambda_c and b with their errors (the first two parameters), and chi^2 per degree of freedom.
+CrossoverFit crossover_result(const Solution& best, std::size_t points) {
+  const std::size_t p = best.x.size();
   CrossoverFit f;
-  f.points = static_cast<int>(lambda.size());
+  f.points = static_cast<int>(points);
   f.log10_lambda_c = best.x[0];
   f.log10_lambda_c_err = std::sqrt(best.cov[0]);
   f.lambda_c = std::pow(10.0, best.x[0]);
   f.lambda_c_err = f.lambda_c * std::log(10.0) * f.log10_lambda_c_err;
   f.b = std::exp(best.x[1]);
-  f.b_err = f.b * std::sqrt(best.cov[3]);
-  f.chi2_red = lambda.size() > 2 ? best.chi2 / (lambda.size() - 2) : 0;
+  f.b_err = f.b * std::sqrt(best.cov[p + 1]);
+  f.chi2_red = points > p ? best.chi2 / static_cast<double>(points - p) : 0;
+  return f;
+}
+
+}  // namespace
+
+CrossoverFit fit_crossover(int d, const std::vector<double>& lambda, const std::vector<double>& beta,
+                           const std::vector<double>& beta_err) {
+  check_inputs("crossover fit", lambda, beta, beta_err, 3);
+  check_lambdas(lambda);
+  // Parameters (log10 lambda_c, log b): b > 0.
+  Problem pr{lambda.size(), 2, [&](std::size_t i, const double* x) {
+               return d - 1 - 0.5 * std::tanh((std::log10(lambda[i]) - x[0]) / std::exp(x[1]));
+             }, &beta};
+  CrossoverFit f = crossover_result(solve_crossover(pr, lambda, {}, beta_err, "crossover fit"), lambda.size());
   f.beta_0 = d - 0.5;
   f.beta_inf = d - 1.5;
   return f;
@@ -163,36 +188,19 @@ CrossoverFit fit_crossover(int d, const std::vector<double>& lambda, const std::
 CrossoverFit fit_crossover_free_plateaus(const std::vector<double>& lambda, const std::vector<double>& beta,
                                          const std::vector<double>& beta_err) {
   check_inputs("crossover fit (plateaus free)", lambda, beta, beta_err, 5);
-  for (double l : lambda)
-    if (!(l > 0) || !std::isfinite(l)) throw FitError("crossover fit: lambda must be finite and > 0 (the limits are not fitted)");
+  check_lambdas(lambda);
   // Parameters (log10 lambda_c, log b, beta_0, beta_inf).
   Problem pr{lambda.size(), 4, [&](std::size_t i, const double* x) {
                return x[3] + (x[2] - x[3]) * 0.5 * (1 - std::tanh((std::log10(lambda[i]) - x[0]) / std::exp(x[1])));
              }, &beta};
-  const double lo = std::log10(*std::min_element(lambda.begin(), lambda.end()));
-  const double hi = std::log10(*std::max_element(lambda.begin(), lambda.end()));
   const double b_max = *std::max_element(beta.begin(), beta.end()), b_min = *std::min_element(beta.begin(), beta.end());
-  Solution best;
-  for (double frac : {0.5, 0.25, 0.75})
-    for (double b0 : {0.5, 1.0, 2.0}) {
-      Solution s = solve(pr, {lo + frac * (hi - lo), std::log(b0), b_max, b_min}, beta_err);
-      if (s.ok && s.chi2 < best.chi2) best = s;
-    }
-  if (!best.ok) throw FitError("crossover fit (plateaus free): the solver did not converge from any start");
-  CrossoverFit f;
+  const Solution best = solve_crossover(pr, lambda, {b_max, b_min}, beta_err, "crossover fit (plateaus free)");
+  CrossoverFit f = crossover_result(best, lambda.size());
   f.plateaus_free = true;
-  f.points = static_cast<int>(lambda.size());
-  f.log10_lambda_c = best.x[0];
-  f.log10_lambda_c_err = std::sqrt(best.cov[0]);
-  f.lambda_c = std::pow(10.0, best.x[0]);
-  f.lambda_c_err = f.lambda_c * std::log(10.0) * f.log10_lambda_c_err;
-  f.b = std::exp(best.x[1]);
-  f.b_err = f.b * std::sqrt(best.cov[5]);
   f.beta_0 = best.x[2];
   f.beta_0_err = std::sqrt(best.cov[10]);
   f.beta_inf = best.x[3];
   f.beta_inf_err = std::sqrt(best.cov[15]);
-  f.chi2_red = lambda.size() > 4 ? best.chi2 / (lambda.size() - 4) : 0;
   return f;
 }
 

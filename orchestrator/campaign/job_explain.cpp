@@ -42,6 +42,15 @@ std::vector<std::pair<std::string, std::string>> flatten_json(const nlohmann::js
   return out;
 }
 
+std::vector<std::string> identity_free_paths(const SimConfig& c) {
+  std::set<std::string> in_key;
+  for (const auto& [path, value] : flatten_json(c.key_json())) in_key.insert(path);
+  std::vector<std::string> out;
+  for (const auto& [path, value] : flatten_json(c.to_json()))
+    if (!in_key.count(path)) out.push_back(path);
+  return out;
+}
+
 std::pair<std::string, nlohmann::json> find_stored_job(db::Database& db, const std::string& key_or_prefix) {
   const bool hex = !key_or_prefix.empty() &&
                    std::all_of(key_or_prefix.begin(), key_or_prefix.end(), [](char ch) { return std::isxdigit(static_cast<unsigned char>(ch)); });

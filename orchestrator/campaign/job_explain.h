@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/config.h"
 #include "orchestrator/db/database.h"
 
 namespace beverloo {
@@ -42,6 +43,10 @@ JobExplanation explain_job(db::Database& db, const std::string& key, const nlohm
 /// The stored job whose key is `key_or_prefix` (at least 8 hex digits; unique); throws
 /// std::invalid_argument naming why not.
 std::pair<std::string, nlohmann::json> find_stored_job(db::Database& db, const std::string& key_or_prefix);
+
+/// The dotted paths of c's canonical job that are not part of its identity (checkpoint cadence,
+/// trajectory output, skin, ...: the parameter rows with in_key = false).
+std::vector<std::string> identity_free_paths(const SimConfig& c);
 
 /// Every leaf of j as dotted path -> JSON text (arrays are leaves).
 std::vector<std::pair<std::string, std::string>> flatten_json(const nlohmann::json& j);

@@ -163,14 +163,6 @@ int explain_command(const std::string& dir, const std::string& what) {
   std::string key, source;
   nlohmann::json job;
   std::vector<std::string> identity_free;
-  auto free_paths = [](const SimConfig& c) {
-    std::set<std::string> in_key;
-    for (const auto& [path, value] : flatten_json(c.key_json())) in_key.insert(path);
-    std::vector<std::string> out;
-    for (const auto& [path, value] : flatten_json(c.to_json()))
-      if (!in_key.count(path)) out.push_back(path);
-    return out;
-  };
   if (fs::is_regular_file(what)) {
     SimConfig c;
     try {
@@ -180,7 +172,7 @@ int explain_command(const std::string& dir, const std::string& what) {
     }
     key = job_key(c);
     job = c.to_json();
-    identity_free = free_paths(c);
+    identity_free = identity_free_paths(c);
     source = what;
   } else {
     try {
@@ -189,7 +181,7 @@ int explain_command(const std::string& dir, const std::string& what) {
       throw SweepError(what, std::string(e.what()) + " (no such file either)");
     }
     try {
-      identity_free = free_paths(SimConfig::from_json(job));
+      identity_free = identity_free_paths(SimConfig::from_json(job));
     } catch (const ConfigError&) {
       // a job of another engine's parameter set: every field counts
     }

@@ -2,6 +2,7 @@
 // beside the nearest finished job with exactly the identity fields in which they differ.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "orchestrator/campaign/job_explain.h"
@@ -14,14 +15,7 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-std::vector<std::string> identity_free(const SimConfig& c) {
-  std::set<std::string> in_key;
-  for (const auto& [path, value] : flatten_json(c.key_json())) in_key.insert(path);
-  std::vector<std::string> out;
-  for (const auto& [path, value] : flatten_json(c.to_json()))
-    if (!in_key.count(path)) out.push_back(path);
-  return out;
-}
+std::vector<std::string> identity_free(const SimConfig& c) { return identity_free_paths(c); }
 
 TEST(JobExplain, CachedJobsAreFoundAndOthersShowTheirNearestFinishedJob) {
   const std::string path = (fs::temp_directory_path() / ("beverloo-explain-" + new_token() + ".sqlite")).string();
@@ -68,6 +62,9 @@ TEST(JobExplain, CachedJobsAreFoundAndOthersShowTheirNearestFinishedJob) {
     std::set<std::string> fields;
     for (const FieldDifference& d : x.differences) fields.insert(d.field);
     EXPECT_EQ(fields, (std::set<std::string>{"w", "zeta"})) << "the skin is not part of a job's identity";
+    const std::vector<std::string> free = identity_free(c);
+    EXPECT_NE(std::find(free.begin(), free.end(), "skin"), free.end());
+    EXPECT_EQ(std::find(free.begin(), free.end(), "w"), free.end());
 
     // the same fields under another key: only the engine version can differ
     x = explain_job(db, std::string(64, 'f'), jobs[2].job, identity_free(jobs[2].config));

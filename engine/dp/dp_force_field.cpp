@@ -110,16 +110,19 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
     double perimeter = 0;
     for (int k = 0; k < n; ++k) {
       const int i = edges_.first + k;
-      outgrown = outgrown || edges_.e[k].squaredNorm() > edge_bound_[i] * edge_bound_[i];
+      outgrown = outgrown || edges_.sq[k] > edge_bound_[i] * edge_bound_[i];
       perimeter += edges_.len[k];
-      // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
-      if (smooth_ && smooth_->fold_may_act(edges_.e[poly_.prev[i] - edges_.first], edges_.e[k], s.species[i]))
+    }
+    // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
+    for (int k = 0; smooth_ && k < n; ++k) {
+      const int i = edges_.first + k, in = poly_.prev[i] - edges_.first;
+      if (smooth_->fold_may_act(edges_.e[in].dot(edges_.e[k]), edges_.sq[in], edges_.sq[k], s.species[i]))
         fold_vertices_.push_back(i);  // capacity reserved: no allocation
     }
     // most polygons are far from the orifice: one test for the polygon, then one per edge
     if (!corners_.polygon_may_touch(s, edges_.first, perimeter)) continue;
     for (int k = 0; k < n; ++k)
-      if (corners_.may_touch(s, edges_.first + k, edges_.e[k].squaredNorm()))
+      if (corners_.may_touch(s, edges_.first + k, edges_.sq[k]))
         corner_edges_.push_back(edges_.first + k);  // capacity reserved: no allocation
   }
   segments_.set_longest_edge(longest);

@@ -98,14 +98,12 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// shape terms (at most vertices are none). The same bits as accumulate() for the same state.
   TermOutput accumulate_with_folds(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>& fold_vertices);
   /// Whether the fold pairs at a vertex can act, from its two edges e_in (prev -> k) and e_out
-  /// (k -> next) and its species: where they meet at more than 90 degrees and both are at
-  /// least the width long, neither fold vertex is in the other edge's slab nor within a cap
-  /// (the fast exit of the fold loop, written as the loop writes it: u = -e_in, v = e_out).
-  bool fold_may_act(const Vec<2>& e_in, const Vec<2>& e_out, int species) const {
-    if (!folds_) return false;
-    const Vec<2> u = -e_in;
-    const double w = width_[species];
-    return !(u.dot(e_out) < 0 && u.squaredNorm() >= w * w && e_out.squaredNorm() >= w * w);
+  /// (k -> next), given as e_in . e_out and their squared lengths, and its species: where they
+  /// meet at more than 90 degrees and both are at least the width long, neither fold vertex is
+  /// in the other edge's slab nor within a cap. This is the fold loop's fast exit on u = -e_in,
+  /// v = e_out: u . v < 0 exactly when e_in . e_out > 0 (negation is exact), |u|^2 = |e_in|^2.
+  bool fold_may_act(double in_dot_out, double sq_in, double sq_out, int species) const {
+    return folds_ && !(in_dot_out > 0 && sq_in >= width2_[species] && sq_out >= width2_[species]);
   }
   /// Friction force on each vertex alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
@@ -135,12 +133,13 @@ class DpSmoothContact final : public ForceTerm<2> {
 
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
                   FrictionLaw friction, bool corners, const char* name)
-      : list_(list), p_(p), width_(width), eps_(E_c), eps_vertex_(E_c), law_(friction), corners_(corners), folds_(corners),
-        name_(name) {}
+      : list_(list), p_(p), width_(width), width2_{width[0] * width[0], width[1] * width[1]}, eps_(E_c), eps_vertex_(E_c),
+        law_(friction), corners_(corners), folds_(corners), name_(name) {}
 
   const NeighborList<2>& list_;
   const PolygonSet& p_;
   std::array<double, 2> width_;  ///< edge (and vertex) contact width per species
+  std::array<double, 2> width2_; ///< its square, w * w as the fold loop computes it
   double eps_;
   double eps_vertex_;  ///< the corner (vertex-vertex) branch's energy scale
   FrictionLaw law_;

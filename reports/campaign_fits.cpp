@@ -92,6 +92,12 @@ void store_authors_fit(db::Statement& au, const Series& s) {
   }
   au.bind(11, s.replica_fits);
   if (std::isnan(s.beta_replica_spread)) au.bind_null(12); else au.bind(12, s.beta_replica_spread);
+  for (const auto& [col, fit] : {std::pair{13, &s.authors_fixed_lo}, std::pair{16, &s.authors_fixed_hi}}) {
+    if (*fit)
+      au.bind(col, (*fit)->k).bind(col + 1, (*fit)->k_err).bind(col + 2, (*fit)->C);
+    else
+      au.bind_null(col).bind_null(col + 1).bind_null(col + 2);
+  }
   au.run();
 }
 }  // namespace
@@ -116,7 +122,9 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
   db::Statement au = db.prepare(
       "UPDATE beverloo_fit_results SET authors_C = ?2, authors_C_err = ?3, authors_k = ?4, authors_k_err = ?5, "
       "authors_beta = ?6, authors_beta_err = ?7, authors_points = ?8, authors_at_bound = ?9, authors_message = ?10, "
-      "replica_fits = ?11, beta_replica_spread = ?12 WHERE series_key = ?1");
+      "replica_fits = ?11, beta_replica_spread = ?12, authors_k_at_beta_lo = ?13, authors_k_at_beta_lo_err = ?14, "
+      "authors_C_at_beta_lo = ?15, authors_k_at_beta_hi = ?16, authors_k_at_beta_hi_err = ?17, authors_C_at_beta_hi = ?18 "
+      "WHERE series_key = ?1");
   for (const Series& s : fits.series) {
     int flowing = 0;
     for (const auto& p : s.points) flowing += p.flowing();
@@ -248,9 +256,10 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   // with the paper's fixed plateaus and with free ones
   std::ostringstream bcsv, bmd, fcsv, fmd;
   bcsv << "label,lambda,beta,beta_err,replica_fits,beta_replica_spread,k,k_err,C,C_err,authors_points,authors_beta,authors_beta_err,authors_k,authors_k_err,"
-          "authors_C,authors_C_err,authors_at_bound,authors_message\n";
+          "authors_C,authors_C_err,authors_at_bound,authors_message,authors_k_at_beta_lo,authors_k_at_beta_lo_err,"
+          "authors_k_at_beta_hi,authors_k_at_beta_hi_err\n";
   bmd << "| series | beta (free) | spread of beta over replicas | beta (authors' way) | k (free) | k (authors' way) | at a "
-         "bound |\n|---|---|---|---|---|---|---|\n";
+         "bound | k at beta = d - 3/2; d - 1/2 (authors' way) |\n|---|---|---|---|---|---|---|---|\n";
   for (const Series& s : fits.series) {
     if (s.rate_is_c0()) continue;
     bcsv << csv_field(s.label) << ',' << format_lambda(s.lambda) << ',';
@@ -263,10 +272,13 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     if (s.authors_fit) {
       const BeverlooFit& a = s.authors_fit->fit;
       bcsv << a.points << ',' << fmt(a.beta, 8) << ',' << fmt(a.beta_err, 4) << ',' << fmt(a.k, 8) << ',' << fmt(a.k_err, 4)
-           << ',' << fmt(a.C, 8) << ',' << fmt(a.C_err, 4) << ',' << csv_field(bound_names(*s.authors_fit)) << ",\n";
+           << ',' << fmt(a.C, 8) << ',' << fmt(a.C_err, 4) << ',' << csv_field(bound_names(*s.authors_fit)) << ",";
     } else {
-      bcsv << ",,,,,,,," << csv_field(s.authors_message) << "\n";
+      bcsv << ",,,,,,,," << csv_field(s.authors_message);
     }
+    for (const auto* fixed : {&s.authors_fixed_lo, &s.authors_fixed_hi})
+      bcsv << ',' << (*fixed ? fmt((*fixed)->k, 8) : "") << ',' << (*fixed ? fmt((*fixed)->k_err, 4) : "");
+    bcsv << "\n";
     auto pm = [](double v, double e) { return fmt(v) + " ± " + fmt(e, 2); };
     const std::string spread = std::isnan(s.beta_replica_spread)
                                    ? std::string("-")
@@ -275,7 +287,9 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
         << " | " << (s.authors_fit ? pm(s.authors_fit->fit.beta, s.authors_fit->fit.beta_err) : "no fit") << " | "
         << (s.fit ? pm(s.fit->k, s.fit->k_err) : "") << " | "
         << (s.authors_fit ? pm(s.authors_fit->fit.k, s.authors_fit->fit.k_err) : "") << " | "
-        << (s.authors_fit ? bound_names(*s.authors_fit) : markdown_cell(s.authors_message)) << " |\n";
+        << (s.authors_fit ? bound_names(*s.authors_fit) : markdown_cell(s.authors_message)) << " | "
+        << (s.authors_fixed_lo ? pm(s.authors_fixed_lo->k, s.authors_fixed_lo->k_err) : "-") << "; "
+        << (s.authors_fixed_hi ? pm(s.authors_fixed_hi->k, s.authors_fixed_hi->k_err) : "-") << " |\n";
   }
   fcsv << "label,points,lambda_c,lambda_c_err,b,b_err,chi2_red,free_lambda_c,free_lambda_c_err,free_b,free_b_err,"
           "free_beta_lambda0,free_beta_lambda0_err,free_beta_inf,free_beta_inf_err,free_chi2_red,free_message\n";

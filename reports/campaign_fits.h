@@ -54,6 +54,9 @@ struct Series {
   /// instead of it.
   std::optional<BoundedBeverlooFit> authors_fit;
   std::string authors_message;
+  /// The authors' fits with beta held at d - 3/2 and at d - 1/2 (fit_beverloo_fixed_beta, as
+  /// their Fig. 2 and Appendix B): k and C of each.
+  std::optional<BeverlooFit> authors_fixed_lo, authors_fixed_hi;
   /// Replicas fitted one by one (those with every width of the pooled fit), and the sample
   /// standard deviation of their betas (NaN below two): the run-to-run spread.
   int replica_fits = 0;

@@ -204,6 +204,39 @@ CrossoverFit fit_crossover_free_plateaus(const std::vector<double>& lambda, cons
   return f;
 }
 
+BeverlooFit fit_beverloo_fixed_beta(const std::vector<double>& w_all, const std::vector<double>& Q_all, double beta,
+                                    const BoundedFitOptions& o) {
+  std::vector<double> w, Q;
+  for (std::size_t i = 0; i < w_all.size() && i < Q_all.size(); ++i)
+    if (w_all[i] > o.w_lo && w_all[i] < o.w_hi && std::isfinite(Q_all[i]) && Q_all[i] > 0.01 * kAuthorsFlowUnit) {
+      w.push_back(w_all[i]);
+      Q.push_back(Q_all[i]);
+    }
+  const std::vector<double> unit(w.size(), 1.0);
+  check_inputs("Beverloo fit with beta fixed", w, Q, unit, 3);
+  // Parameters (k, C), free, as in the authors' fit: |C| |w - k|^beta
+  Problem pr{w.size(), 2, [&](std::size_t i, const double* x) { return std::fabs(x[1] * std::pow(std::fabs(w[i] - x[0]), beta)); },
+             &Q};
+  Solution best;
+  const double w_min = *std::min_element(w.begin(), w.end());
+  for (double k0 : {0.01, 1.0, 2.0, w_min - 0.5})
+    for (double C0 : {0.01 * kAuthorsFlowUnit, 1.0, 5.0}) {
+      Solution s = solve(pr, {k0, C0}, unit);
+      if (s.ok && s.chi2 < best.chi2) best = s;
+    }
+  if (!best.ok) throw FitError("Beverloo fit with beta fixed: the solver did not converge from any start");
+  BeverlooFit f;
+  f.points = static_cast<int>(w.size());
+  const double dof = w.size() > 2 ? static_cast<double>(w.size() - 2) : 1.0, s2 = best.chi2 / dof;
+  f.k = best.x[0];
+  f.k_err = std::sqrt(s2 * best.cov[0]);
+  f.C = std::fabs(best.x[1]);
+  f.C_err = std::sqrt(s2 * best.cov[3]);
+  f.beta = beta;
+  f.chi2_red = s2;
+  return f;
+}
+
 BoundedBeverlooFit fit_beverloo_bounded(const std::vector<double>& w_all, const std::vector<double>& Q_all,
                                         const BoundedFitOptions& o) {
   std::vector<double> w, Q;

@@ -48,6 +48,14 @@ struct BoundedBeverlooFit {
 BoundedBeverlooFit fit_beverloo_bounded(const std::vector<double>& w, const std::vector<double>& Q,
                                         const BoundedFitOptions& o);
 
+/// The Beverloo fit with beta held fixed, as the authors fitted their Fig. 2 and Appendix B
+/// (CLI_hopper.m helper_plotFlowRate2, fitmodes 1 and 2: beta = 1/2 or 3/2, |C (w - k)^beta|
+/// unweighted, no bounds, over the widths of `o` and only points with Q above 0.01 of their flow
+/// unit, i.e. Q > 3.164 sigma_avg^2/t0). k and C with errors from the residuals; beta_err = 0.
+/// Needs at least 3 points.
+BeverlooFit fit_beverloo_fixed_beta(const std::vector<double>& w, const std::vector<double>& Q, double beta,
+                                    const BoundedFitOptions& o);
+
 struct CrossoverFit {
   double lambda_c = 0, lambda_c_err = 0, log10_lambda_c = 0, log10_lambda_c_err = 0;
   double b = 0, b_err = 0;

@@ -105,6 +105,13 @@ void fit_series(Series& s, const std::vector<RunRecord>& runs) {
   } catch (const FitError& err) {
     s.authors_message = err.what();
   }
+  for (auto [beta, fit] : {std::pair{s.dimension - 1.5, &s.authors_fixed_lo}, std::pair{s.dimension - 0.5, &s.authors_fixed_hi}}) {
+    try {
+      *fit = fit_beverloo_fixed_beta(w, Q, beta, BoundedFitOptions::authors());
+    } catch (const FitError&) {
+      // too few points above the authors' flow threshold: NULL in the table
+    }
+  }
 }
 
 }  // namespace beverloo

@@ -12,6 +12,14 @@ ALTER TABLE beverloo_fit_results ADD COLUMN authors_beta_err REAL;
 ALTER TABLE beverloo_fit_results ADD COLUMN authors_points INTEGER;
 ALTER TABLE beverloo_fit_results ADD COLUMN authors_at_bound TEXT;
 ALTER TABLE beverloo_fit_results ADD COLUMN authors_message TEXT;   -- why there is no such fit
+-- the authors' fits with beta held fixed (their Fig. 2 and Appendix B: fitmodes 1 and 2), at
+-- beta = d - 3/2 (lo) and d - 1/2 (hi): unweighted, points with Q > 0.01 of their flow unit only
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_k_at_beta_lo REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_k_at_beta_lo_err REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_C_at_beta_lo REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_k_at_beta_hi REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_k_at_beta_hi_err REAL;
+ALTER TABLE beverloo_fit_results ADD COLUMN authors_C_at_beta_hi REAL;
 -- the run-to-run spread: each replica (seed) fitted alone (those with every width of the pooled
 -- fit), and the sample standard deviation of their betas (NULL below two replicas)
 ALTER TABLE beverloo_fit_results ADD COLUMN replica_fits INTEGER;
@@ -33,7 +41,8 @@ ALTER TABLE crossover_fit_results ADD COLUMN free_message TEXT;
 CREATE VIEW beverloo_fits_both_ways AS
 SELECT label, dimension, N, lambda, points, beta, beta_err, replica_fits, beta_replica_spread, k, k_err, C, C_err,
        authors_points, authors_beta, authors_beta_err, authors_k, authors_k_err, authors_C, authors_C_err,
-       authors_at_bound, authors_message, series_key
+       authors_at_bound, authors_message, authors_k_at_beta_lo, authors_k_at_beta_lo_err, authors_C_at_beta_lo,
+       authors_k_at_beta_hi, authors_k_at_beta_hi_err, authors_C_at_beta_hi, series_key
 FROM beverloo_fit_results ORDER BY dimension, E_sp, lambda;
 
 CREATE VIEW crossover_fits_both_ways AS

@@ -156,5 +156,22 @@ TEST(BoundedBeverlooFit, InsideTheBoundsItIsTheLeastSquaresOptimumAndABoundHolds
   EXPECT_THROW(fit_beverloo_bounded({3, 4, 25}, {1, 2, 3}, BoundedFitOptions::authors()), FitError);
 }
 
+TEST(BoundedBeverlooFit, BetaFixedRecoversKAndCAndLeavesOutSmallFlows) {
+  std::vector<double> w, Q;
+  for (int i = 0; i <= 19; ++i) {
+    w.push_back(3.0 + 0.4 * i);
+    Q.push_back(beverloo_model(w.back(), 1.7, 2.4, 0.5));  // drag-only-like: Q 1.7 .. 4.8
+  }
+  const BeverlooFit f = fit_beverloo_fixed_beta(w, Q, 0.5, BoundedFitOptions::authors());
+  EXPECT_NEAR(f.k, 2.4, 1e-5);
+  EXPECT_NEAR(f.C, 1.7, 1e-5);
+  EXPECT_EQ(f.beta, 0.5);
+  int above = 0;
+  for (double q : Q) above += q > 0.01 * kAuthorsFlowUnit;
+  EXPECT_EQ(f.points, above) << "points with Q below 0.01 of the authors' unit are left out, as theirs were";
+  EXPECT_LT(f.points, 20);
+  EXPECT_THROW(fit_beverloo_fixed_beta({3, 4}, {4, 5}, 0.5, BoundedFitOptions::authors()), FitError);
+}
+
 }  // namespace
 }  // namespace beverloo

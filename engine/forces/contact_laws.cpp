@@ -46,13 +46,18 @@ const std::vector<NormalLawRow>& normal_laws() {
 const NormalLawRow& normal_law(std::string_view name) {
   for (const NormalLawRow& r : normal_laws())
     if (r.name == name) return r;
-  throw ConfigError("sp_contact_law", "\"" + std::string(name) + "\": must be one of " + normal_law_names());
+  std::string message = "\"";
+  message.append(name).append("\": must be one of ").append(normal_law_names());
+  throw ConfigError("sp_contact_law", message);
 }
 
 const std::string& normal_law_names() {
   static const std::string names = [] {
     std::string s;
-    for (const NormalLawRow& r : normal_laws()) s += (s.empty() ? "" : ",") + std::string(r.name);
+    for (const NormalLawRow& r : normal_laws()) {
+      if (!s.empty()) s += ',';
+      s.append(r.name);
+    }
     return s;
   }();
   return names;
@@ -61,8 +66,10 @@ const std::string& normal_law_names() {
 const std::string& normal_law_docs() {
   static const std::string docs = [] {
     std::string s;
-    for (const NormalLawRow& r : normal_laws())
-      s += (s.empty() ? "" : "; ") + ("\"" + std::string(r.name) + "\": " + std::string(r.doc));
+    for (const NormalLawRow& r : normal_laws()) {
+      if (!s.empty()) s += "; ";
+      s.append("\"").append(r.name).append("\": ").append(r.doc);
+    }
     return s;
   }();
   return docs;

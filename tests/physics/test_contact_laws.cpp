@@ -68,7 +68,8 @@ TEST(ContactLaws, TheJobFilesAllowedValuesAreTheRegistrysNames) {
   EXPECT_EQ(std::string(p->allowed), normal_law_names());
   for (const NormalLawRow& law : normal_laws()) {
     EXPECT_EQ(&normal_law(law.name), &law);
-    EXPECT_NE(std::string(p->doc).find("\"" + std::string(law.name) + "\""), std::string::npos) << law.name;
+    const std::string quoted = std::string("\"").append(law.name).append("\"");
+    EXPECT_NE(std::string(p->doc).find(quoted), std::string::npos) << law.name;
   }
   try {
     normal_law("hooke");

@@ -37,6 +37,9 @@ struct RunControls {
   double t_max = 2000.0;             ///< hard limit on flowing time after gravity is switched on
   double target_rel_err = 0.02;      ///< stop when SE(Q)/Q falls below this
   double t_clog = 100.0;             ///< no exit for this long: clogged
+  /// Stop early (status "unreachable") when the error's fall predicts that t_max will not bring
+  /// SE(Q)/Q to the target (HopperRun::run); off by default.
+  bool stop_unreachable = false;
   double min_transient = 20.0;       ///< transient removed is at least this long
   double min_window = 100.0;         ///< the measurement window is at least this long before stopping
   double check_interval = 10.0;      ///< how often the stopping rule is evaluated

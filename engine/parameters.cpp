@@ -170,6 +170,10 @@ std::vector<ParamSpec> build_table() {
        .lo_open = true, .hi_open = true, .in_seed = false, .sql_column = "target_rel_err"},
       {.path = "run.t_clog", .type = T::Real, .unit = "t0", .default_text = "100", .doc = "no exit for this long: clogged",
        .access = REAL(run.t_clog), .lo = 0, .lo_open = true, .in_seed = false},
+      {.path = "run.stop_unreachable", .type = T::Boolean, .unit = "-", .default_text = "false",
+       .doc = "true: stop once the error's fall (1/sqrt of the window) predicts that run.t_max cannot reach run.target_rel_err "
+              "(status unreachable; Q with its error)",
+       .access = BOOL(run.stop_unreachable), .in_seed = false},
       {.path = "run.min_transient", .type = T::Real, .unit = "t0", .default_text = "20",
        .doc = "the transient cut is at least this long", .access = REAL(run.min_transient), .lo = 0,
        .in_seed = false},

@@ -89,7 +89,7 @@ CampaignRuns read_campaign_runs(db::Database& db) {
     r.Q = st.get_double(2);
     r.Q_err = st.get_double(3);
     r.clogged = st.get_int(4) != 0;
-    r.time_limited = st.get_text(5) == "time_limit";
+    r.time_limited = st.get_text(5) == "time_limit" || st.get_text(5) == "unreachable";  // Q with its larger error
     r.clog_time = st.get_double(6);
     r.end_time = static_cast<double>(st.get_int(7)) * st.get_double(8);
     r.t_max = job.contains("run") ? job["run"].value("t_max", 0.0) : 0.0;

@@ -279,6 +279,15 @@ RunResult HopperRun<D>::run() {
       if (c_.reinject && est.valid && est.t_end - est.t_start >= c_.run.min_window &&
           est.rel_err() <= c_.run.target_rel_err)
         return finish("converged", "relative error of Q reached run.target_rel_err", est);
+      // The error of a steady flow's mean falls as 1/sqrt of the window: the window t_max allows
+      // predicts the error at t_max. Beyond the target by a margin (the present error is itself
+      // uncertain), the rest of the run would be spent for a point the target cannot have.
+      if (c_.run.stop_unreachable && c_.reinject && est.valid && est.t_end - est.t_start >= c_.run.min_window) {
+        const double predicted = est.rel_err() * std::sqrt((est.t_end - est.t_start) / (c_.run.t_max - est.t_start));
+        if (predicted > kUnreachableMargin * c_.run.target_rel_err)
+          return finish("unreachable", "at t_max SE(Q)/Q would be about " + std::to_string(predicted) + ", above " +
+                                           std::to_string(kUnreachableMargin) + " x run.target_rel_err", est);
+      }
     }
     if (step >= max_steps) {
       est = estimator_.estimate(rec_, t);

@@ -58,6 +58,8 @@ struct RunOptions {
 template <int D>
 class HopperRun : private StepHook<D> {
  public:
+  /// run.stop_unreachable stops a run whose predicted error at t_max exceeds this times the target
+  static constexpr double kUnreachableMargin = 1.5;
   HopperRun(const SimConfig& c, RunOptions options);
   ~HopperRun();
 

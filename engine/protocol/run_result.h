@@ -15,6 +15,8 @@ namespace beverloo {
 inline const char* run_status_meaning(const std::string& status) {
   if (status == "converged") return "Q reached run.target_rel_err";
   if (status == "time_limit") return "run.t_max came first: Q is stored with its (larger) error";
+  if (status == "unreachable")
+    return "stopped early (run.stop_unreachable): run.t_max could not reach the error target; Q is stored with its error";
   if (status == "clogged") return "the flow stopped: no exit for run.t_clog (Q = 0)";
   if (status == "interrupted") return "stopped by a signal; resumes from its checkpoint";
   if (status == "drained") return "a draining hopper emptied to drain.stop_below; Q is c0 t0 of dN/dt = -c0 sqrt(N)";
@@ -23,7 +25,7 @@ inline const char* run_status_meaning(const std::string& status) {
 
 struct RunResult {
   // outcome
-  std::string status;       ///< "converged" | "time_limit" | "clogged" | "drained" | "interrupted"
+  std::string status;       ///< "converged" | "time_limit" | "unreachable" | "clogged" | "drained" | "interrupted"
   std::string stop_reason;  ///< one human sentence
   // flow rate (physics.md 7), area (2D) or volume (3D) per t0
   double Q = 0, Q_err = 0, Q_rel_err = 0;

@@ -309,6 +309,7 @@ nlohmann::json SimConfig::to_json() const {
     if (p.omit_at_default &&
         ((p.type == ParamType::Real && a.real(self) == a.real(defaults)) ||
          (p.type == ParamType::Integer && a.integer(self) == a.integer(defaults)) ||
+         (p.type == ParamType::Boolean && a.boolean(self) == a.boolean(defaults)) ||
          (p.type == ParamType::Text && a.text(self) == a.text(defaults))))
       continue;
     const auto [g, k] = split_path(p.path);

@@ -62,6 +62,9 @@ TEST(StoppingRules, AnUnreachableTargetStopsEarlyWithItsErrorAndOnlyWhenAsked) {
   EXPECT_EQ(a.Q, b.Q);
   EXPECT_EQ(a.Q_err, b.Q_err);
   EXPECT_EQ(a.window_end, b.window_end);
+  // off is the default and leaves the canonical job (and so every job key made before it) as it was
+  EXPECT_FALSE(small_flow(0.2, false).to_json()["run"].contains("stop_unreachable"));
+  EXPECT_TRUE(small_flow(0.2, true).to_json()["run"].value("stop_unreachable", false));
 }
 
 }  // namespace

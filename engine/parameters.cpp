@@ -173,7 +173,8 @@ std::vector<ParamSpec> build_table() {
       {.path = "run.stop_unreachable", .type = T::Boolean, .unit = "-", .default_text = "false",
        .doc = "true: stop once the error's fall (1/sqrt of the window) predicts that run.t_max cannot reach run.target_rel_err "
               "(status unreachable; Q with its error)",
-       .access = BOOL(run.stop_unreachable), .in_seed = false, .omit_at_default = true},
+       .access = BOOL(run.stop_unreachable), .in_seed = false, .omit_at_default = true, .sql_column = "stop_unreachable",
+       .sql_default = "0"},
       {.path = "run.min_transient", .type = T::Real, .unit = "t0", .default_text = "20",
        .doc = "the transient cut is at least this long", .access = REAL(run.min_transient), .lo = 0,
        .in_seed = false},

@@ -12,15 +12,7 @@ namespace beverloo {
 namespace {
 
 SimConfig small_flow(double target, bool stop_unreachable) {
-  SimConfig c;
-  c.dimension = 2;
-  c.N = 150;
-  c.W = 12;
-  c.w = 4;
-  c.E_sp = 100;
-  c.zeta = 0.316;
-  c.mu = 0;
-  c.seed = 5;
+  SimConfig c = testing::small_config(2, 150, 4, 0.316, 0);  // drag only, W = 12
   c.run.t_max = 60;
   c.run.min_transient = 3;
   c.run.min_window = 8;

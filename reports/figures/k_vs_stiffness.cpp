@@ -1,6 +1,9 @@
 // The offset k versus the paper's softness axes, per dissipation setting: E_sp for SP, K_b
-// for DP (DP groups also keep K_l and E_c fixed).
+// for DP (DP groups also keep K_l and E_c fixed). In the two limits also, dashed, k of the fit
+// with beta held at d - 1/2 (lambda = 0) or d - 3/2 (lambda = inf), the way the paper fits
+// (series_fits.cpp): the free fit trades k against beta, the paper's fit puts it all in k.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -31,10 +34,27 @@ ReportFigure k_versus(const FigureContext& c, bool dp) {
   }
   int k = 0;
   for (const auto& [label, list] : lines) {
+    const std::string style = series_style(k++, static_cast<int>(lines.size()));
     const int block = f.begin_block(label + (dp ? ": K_b k k_err" : ": E_sp k k_err"));
     for (const Series* s : list) f.data << num(stiffness(s)) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
-    f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2:3 with yerrorlines " +
-                      series_style(k++, static_cast<int>(lines.size())) + " title " + gnuplot_string(label));
+    f.plots.push_back("DATA index " + std::to_string(block) + " using 1:2:3 with yerrorlines " + style + " title " +
+                      gnuplot_string(label));
+    // the limits: k with beta held as the paper fits
+    const double lambda = list.front()->lambda;
+    if (lambda != 0 && !std::isinf(lambda)) continue;
+    const bool friction = lambda == 0;
+    std::vector<const Series*> fixed;
+    for (const Series* s : list)
+      if (friction ? s->authors_fixed_hi.has_value() : s->authors_fixed_lo.has_value()) fixed.push_back(s);
+    if (fixed.size() < 2) continue;
+    const int held = f.begin_block(label + (dp ? ": K_b" : ": E_sp") + " k k_err with beta held (the paper's way)");
+    for (const Series* s : fixed) {
+      const BeverlooFit& fit = friction ? *s->authors_fixed_hi : *s->authors_fixed_lo;
+      f.data << num(stiffness(s)) << " " << num(fit.k) << " " << num(fit.k_err) << "\n";
+    }
+    const std::string beta = friction ? num(list.front()->dimension - 0.5) : num(list.front()->dimension - 1.5);
+    f.plots.push_back("DATA index " + std::to_string(held) + " using 1:2:3 with yerrorlines dt 2 " +
+                      style.substr(0, style.find(" pt")) + " title " + gnuplot_string(label + ", beta held at " + beta));
   }
   return finish(f, c.dir,
                 dp ? "needs fitted DP series at two or more K_b with the other parameters equal"

@@ -122,7 +122,7 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
 /// over replicas (docs/paper.md): never instead of the fits above.
 void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
   bool any = false;
-  for (const Series& s : fits.series) any = any || s.authors_fit || s.replica_fits > 0;
+  for (const Series& s : fits.series) any = any || !s.rate_is_c0();  // a series without a fit says why
   if (!any) return;
   html << "<h2>Every exponent two ways</h2>\n<p>beverloo's free fit (above) beside the fit the paper's authors made: "
           "unweighted, beta bounded to [0.4, 1.58], k to [0.5, 5], over 2 &lt; w &lt; 19 (a parameter on a bound is "

@@ -21,7 +21,15 @@ python3 -c "import sys; p = float('$p'); sys.exit(0 if ($clogs == 4 and p == 1.0
 p6=$("$BIN" query "$WORK/c" "SELECT p_clog FROM clog_statistics WHERE w = 6" --format csv | tail -1)
 clogs6=$("$BIN" query "$WORK/c" "SELECT count(*) FROM runs WHERE w = 6 AND clogged = 1" --format csv | tail -1)
 [ "$clogs6" != 0 ] || [ "$p6" = 0 ] || [ "$p6" = 0.0 ] || fail "w = 6 had no clog but p_clog = $p6"
+# the authors' way beside ours: printed only when asked, stored always
+"$BIN" fit "$WORK/c" | grep -q "^Both ways" && fail "fit printed the authors' way without --authors-way"
+"$BIN" fit "$WORK/c" --authors-way > "$WORK/fit2.out" || fail "fit --authors-way"
+grep -q "^Both ways" "$WORK/fit2.out" || fail "fit --authors-way printed no side-by-side table"
+rows=$("$BIN" query "$WORK/c" "SELECT count(*) FROM beverloo_fits_both_ways WHERE authors_points IS NOT NULL OR authors_message IS NOT NULL" --format csv | tail -1)
+[ "$rows" -ge 1 ] || fail "beverloo_fits_both_ways holds no authors' fit or reason"
 "$BIN" report "$WORK/c" > /dev/null 2>&1 || fail "report"
+grep -q "Every exponent two ways" "$WORK/c/report/index.html" || fail "index.html lacks the two-ways table"
+grep -q "<h2>Clogging" "$WORK/c/report/index.html" || fail "index.html lacks the clogging table"
 if command -v gnuplot > /dev/null; then [ -s "$WORK/c/report/clog_survival.svg" ] || fail "no clog_survival figure"; fi
 [ -s "$WORK/c/report/clog_survival.dat" ] || fail "no clog_survival data"
 
@@ -36,4 +44,4 @@ P
 "$BIN" campaign explain "$WORK/job2.json" --dir "$WORK/c" > "$WORK/explain.out"
 grep -q "^cached       no" "$WORK/explain.out" || fail "explain: a new job cached"
 grep -Eq "^  w +this 5.5 +stored 6" "$WORK/explain.out" || { cat "$WORK/explain.out"; fail "explain: w not named"; }
-echo "clog statistics and explain ok"
+echo "clog statistics, both ways and explain ok"

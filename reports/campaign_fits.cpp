@@ -68,7 +68,6 @@ CampaignFits fit_campaign(db::Database& db) {
   return out;
 }
 
-namespace {
 /// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).
 std::string bound_names(const BoundedBeverlooFit& f) {
   std::string out;
@@ -80,6 +79,7 @@ std::string bound_names(const BoundedBeverlooFit& f) {
   return out;
 }
 
+namespace {
 void store_authors_fit(db::Statement& au, const Series& s) {
   au.bind(1, s.key);
   if (s.authors_fit) {

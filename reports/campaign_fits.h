@@ -106,6 +106,8 @@ void store_fits(db::Database& db, const CampaignFits& fits);
 void write_fit_tables(const CampaignFits& fits, const std::string& dir);
 /// The Markdown table of the series fits (also used by the HTML report).
 std::string format_lambda(double lambda);
+/// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).
+std::string bound_names(const BoundedBeverlooFit& f);
 /// A number in the fit tables: %.*g, "inf" / "-inf", "" for NaN (the exports keep precision).
 std::string table_number(double v, int digits = 4);
 

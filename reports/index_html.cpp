@@ -139,8 +139,7 @@ void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
          << "</td>";
     if (s.authors_fit)
       html << "<td>" << pm(s.authors_fit->fit.beta, s.authors_fit->fit.beta_err) << "</td><td>"
-           << (s.authors_fit->beta_at_bound ? "beta " : "") << (s.authors_fit->k_at_bound ? "k " : "")
-           << (s.authors_fit->C_at_bound ? "C" : "") << "</td>";
+           << html_escape(bound_names(*s.authors_fit)) << "</td>";
     else
       html << "<td colspan=2>" << html_escape(s.authors_message) << "</td>";
     for (const auto* fixed : {&s.authors_fixed_lo, &s.authors_fixed_hi})

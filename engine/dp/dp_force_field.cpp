@@ -106,7 +106,7 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
     area_.add_polygon(s, s.f, m, U_area);
     segments_.add_polygon(s, s.f, edges_, U_length, longest);
     bending_.add_polygon(s, s.f, edges_, U_bending);
-    const int n = poly_.first[m + 1] - edges_.first;
+    const int n = edges_.count;
     double perimeter = 0;
     for (int k = 0; k < n; ++k) {
       const int i = edges_.first + k;

@@ -31,7 +31,7 @@ class DpBending final : public ForceTerm<2> {
   /// DpArea::add_polygon for why per polygon.
   void add_polygon(const ParticleState<2>& s, VecArray<2>& f, const PolygonEdges& edges, double& energy) {
     if (k_ == 0) return;
-    const int first = edges.first, n = p_.first[p_.owner[first] + 1] - first;
+    const int first = edges.first, n = edges.count;
     if (static_cast<int>(unit_.size()) < n) {  // only for a polygon larger than any before
       unit_.resize(n);
       inv_len_.resize(n);

@@ -13,6 +13,7 @@ namespace beverloo {
 
 struct PolygonEdges {
   int first = 0;            ///< the polygon's first vertex; edge k runs from vertex first + k to its next
+  int count = 0;            ///< its edges (= vertices)
   VecArray<2> e;            ///< edge vectors r_next(i) - r_i
   std::vector<double> sq;   ///< |e_k|^2 (Eigen's squaredNorm())
   std::vector<double> len;  ///< |e_k| = sqrt(|e_k|^2), as Eigen's norm() computes it (the terms' own bits)
@@ -20,7 +21,7 @@ struct PolygonEdges {
   /// Measures polygon m. Allocates only when a polygon has more vertices than any before.
   void measure(const PolygonSet& p, const VecArray<2>& x, int m) {
     first = p.first[m];
-    const int n = p.first[m + 1] - first;
+    const int n = count = p.first[m + 1] - first;
     if (static_cast<int>(e.size()) < n) {
       e.resize(n);
       sq.resize(n);

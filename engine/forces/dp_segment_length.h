@@ -31,7 +31,7 @@ class DpSegmentLength final : public ForceTerm<2> {
   /// into `longest` (a running maximum). See DpArea::add_polygon for why per polygon.
   void add_polygon(const ParticleState<2>& s, VecArray<2>& f, const PolygonEdges& edges, double& energy,
                    double& longest) const {
-    const int first = edges.first, n = p_.first[p_.owner[first] + 1] - first;
+    const int first = edges.first, n = edges.count;
     for (int k = 0; k < n; ++k) {
       const int i = first + k, j = p_.next[i];
       const Vec<2>& e = edges.e[k];

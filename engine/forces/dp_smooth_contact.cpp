@@ -123,6 +123,33 @@ void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double& energ
     edge_vertex<kMode>(s, a, b, energy, power, max_ov);  // edge a -> next
   if (b != s.prev[ap] && da < dist2(ap) && may_touch(ap, a))
     edge_vertex<kMode>(s, ap, b, energy, power, max_ov);  // edge prev -> a
+  if constexpr (kMode != Mode::FrictionOnly)
+    if (corners_ && da < dmn * dmn && b != an && b != ap) corner_in_both_slabs<kMode>(s, a, b, da, dmn, energy);
+}
+
+template <DpSmoothContact::Mode kMode>
+void DpSmoothContact::corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, double& energy) const {
+  // Vertex b in the slabs of both edges at a (a concave corner seen from b, or b inside the
+  // polygon): each slab counts b, and each slab's energy at its boundary through a is the
+  // corner's, (E_c/2)(1 - |r_b - r_a|/delta)^2. Subtracting that once here makes the sum
+  // continuous where b leaves either slab (the wedge rule alone dropped it there: a jump) and
+  // counts b once at the corner itself. t and t_prev with the very operations of edge_vertex.
+  const Vec<2> ra = s.x[a], rb = s.x[b];
+  const Vec<2> e = s.x[s.next[a]] - ra;
+  const double t = (rb - ra).dot(e) / e.squaredNorm();
+  if (t < 0 || t > 1) return;
+  const Vec<2> rp = s.x[s.prev[a]];
+  const Vec<2> ep = ra - rp;
+  const double t_prev = (rb - rp).dot(ep) / ep.squaredNorm();
+  if (t_prev < 0 || t_prev > 1) return;
+  const double d = std::sqrt(da);
+  if (d == 0) return;
+  double corner_energy = 0, law_ov;
+  const double repulsion = NormalLaw::force(s.eps, 1.0 / dmn, d, corner_energy, law_ov);
+  energy -= corner_energy;
+  const Vec<2> fb = (repulsion / d) * (rb - ra);  // the corner's repulsion on b, taken away
+  s.f[b] -= fb;
+  s.f[a] += fb;
 }
 
 template <DpSmoothContact::Mode kMode>

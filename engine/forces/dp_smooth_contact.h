@@ -125,6 +125,9 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.
   template <Mode kMode>
   void edges_at_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov) const;
+  /// Vertex b in both slabs of the edges at a, within delta of a: one corner energy taken away.
+  template <Mode kMode>
+  void corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, double& energy) const;
   /// Fold pairs (same polygon, b one place beyond an end of edge a) cap the edge at that end.
   enum class FoldCap { None, AtStart, AtEnd };
   template <Mode kMode>

@@ -4,8 +4,8 @@
 # the fits and the report in campaigns/quickstart/report/index.html; then show Q(w) and the fits.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
-scripts/build.sh
+scripts/install-deps.sh main
+scripts/build.sh main
 BIN=./build/orchestrator/beverloo
 "$BIN" run sweeps/quickstart.json --dir campaigns/quickstart
 "$BIN" campaign status --dir campaigns/quickstart

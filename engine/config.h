@@ -98,6 +98,10 @@ struct DpParams {
   /// Diameter of a vertex against the walls and the orifice corners, in l0 (unset: the contact
   /// diameter, dp.contact_width l0 smooth or l0 rough; the code: 1).
   std::optional<double> wall_width;
+  /// Thickness of the funnel walls in l0 of the small species (0: walls are lines, the text's
+  /// model; the authors' code: a floor l0 thick whose end at the orifice is a bead l0 wide,
+  /// engine/geometry/funnel_cores.h).
+  double wall_thickness = 0;
   double K_l_of(int species) const { return species == 1 && K_l_large ? *K_l_large : K_l; }
   double K_a_of(int species) const { return species == 1 && K_a_large ? *K_a_large : K_a; }
 };

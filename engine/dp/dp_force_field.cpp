@@ -21,7 +21,8 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       gravity_(c.gravity),
       drag_(drag_coefficients(c.zeta / shape.n_v, c.drag_rate, {shape.vertex_mass[0], shape.vertex_mass[1]})),
       corners_(hopper, p, shape, c.E_w),
-      hopper_(hopper) {
+      hopper_(hopper),
+      cores_(hopper, shape.wall_thickness) {
   if (shape.smooth) {
     // Edges of one polygon repel its own vertices too (self-contact; not ring neighbours, whose
     // edges meet at them): nothing else keeps a soft polygon (K_l ~ 1, K_b ~ 1e-2) from folding
@@ -57,6 +58,14 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   fold_vertices_.reserve(p.vertices());
   // a wall contact wider than the pair contact (dp.wall_width): the wall masks reach as far
   if (c.dp.wall_width) list_.set_wall_diameters({shape.wall[0], shape.wall[1]});
+  if (shape.wall_thickness > 0) {
+    // thick funnel walls: the masks reach the cores, which lie up to offset_from_wall() behind
+    // the walls' segments, plus the walls' half thickness
+    const double extra = 2 * (cores_.half_thickness() + cores_.offset_from_wall());
+    list_.set_wall_diameters({shape.wall[0] + extra, shape.wall[1] + extra});
+    walls_.set_funnel_cores(&cores_);
+    corners_.set_funnel_cores(cores_);
+  }
 }
 
 void DpForceField::topology_changed() {

@@ -20,6 +20,7 @@
 #include "../forces/gravity.h"
 #include "../forces/hopper_walls.h"
 #include "../forces/sp_contact.h"
+#include "../geometry/funnel_cores.h"
 #include "polygons.h"
 
 namespace beverloo {
@@ -55,6 +56,8 @@ class DpForceField {
   /// Where the largest contact overlap of the last evaluation is (for failure messages).
   std::string describe_worst_contact(const ParticleState<2>& s, const PolygonSet& p) const;
 
+  /// The funnel walls' cores (dp.wall_thickness; half_thickness() 0: walls are lines).
+  const FunnelCores& funnel_cores() const { return cores_; }
   /// Vertex "diameters" for the Verlet list: the contact diameters; the smooth contact adds
   /// each vertex's edge reach on top (NeighborList::set_extra_reach).
   static std::array<double, 2> list_diameters(const DpShape& shape);
@@ -88,6 +91,7 @@ class DpForceField {
   Drag<2> drag_;
   DpWallCorners corners_;
   const Hopper<2>& hopper_;
+  FunnelCores cores_;             ///< the funnel walls' cores (thickness 0: unused)
   PolygonEdges edges_;            ///< the polygon at hand in shape_pass
   bool edge_outgrown_ = false;    ///< set by shape_pass
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing

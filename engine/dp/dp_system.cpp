@@ -119,6 +119,16 @@ void DpSystem::body_friction(VecArray<2>& out) {
   for (int i = 0; i < verts_.size(); ++i) out[poly_.owner[i]] += vertex_scratch_[i];
 }
 
+namespace {
+/// Within a thick funnel wall (within T/2 of its core), not beyond it.
+bool inside_a_wall(const FunnelCores& cores, const Vec<2>& x) {
+  const double h = cores.half_thickness();
+  for (int k = 0; k < 2; ++k)
+    if ((x - cores.nearest_point(k, x)).squaredNorm() <= h * h) return true;
+  return false;
+}
+}  // namespace
+
 void DpSystem::check_vertices(double t) const {
   // The contact search follows stretched edges (DpForceField::edge_bound); an edge this long
   // means the polygon is coming apart.
@@ -134,8 +144,12 @@ void DpSystem::check_vertices(double t) const {
   for (int i = 0; i < verts_.size(); ++i) {
     const Vec<2>& x = verts_.x[i];
     const Vec<2>& next = verts_.x[poly_.next[i]];
-    const int wall = hopper_.funnel_wall_crossed(x, next);
-    if (!hopper_.contains(x) || wall >= 0) {
+    // thick walls (dp.wall_thickness): a vertex may be inside a wall; it is through only past the core
+    const FunnelCores& cores = ff_->funnel_cores();
+    const bool thick = cores.half_thickness() > 0;
+    const int wall = thick ? cores.crossed(x, next) : hopper_.funnel_wall_crossed(x, next);
+    const bool outside = !hopper_.contains(x) && !(thick && inside_a_wall(cores, x));
+    if (outside || wall >= 0) {
       std::ostringstream msg;
       msg << "polygon " << poly_.owner[i] << " went through a wall at t = " << t << ": ";
       if (wall >= 0)

@@ -20,6 +20,7 @@ DpShape DpShape::from_config(const SimConfig& c) {
     s.vertex_mass[k] = sp.mass[k] / nv;
     s.circumradius[k] = s.l0[k] / (2 * std::sin(units::pi / nv));
   }
+  s.wall_thickness = c.dp.wall_thickness * s.l0[0];
   return s;
 }
 

@@ -22,6 +22,7 @@ struct DpShape {
   double l0[2]{};           ///< reference edge length of the regular polygon of area a0
   double delta[2]{};        ///< contact diameter: l0 (rough vertex disks) or dp.contact_width l0 (smooth edges)
   double wall[2]{};         ///< diameter against walls and orifice corners: dp.wall_width l0, unset: delta
+  double wall_thickness = 0; ///< of the funnel walls: dp.wall_thickness l0 of the small species
   double vertex_mass[2]{};  ///< M / n_v
   double circumradius[2]{}; ///< of the regular reference polygon
   bool smooth = true;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../dp/polygons.h"
+#include "../geometry/funnel_cores.h"
 #include "../geometry/hopper.h"
 #include "force_term.h"
 #include "harmonic_overlap.h"
@@ -29,6 +30,12 @@ class DpWallCorners final : public ForceTerm<2> {
       : p_(p), shape_(shape), eps_(E_w) {
     const double half = hopper.orifice_half_width();
     corners_ = {Vec<2>(-half, 0.0), Vec<2>(half, 0.0)};
+  }
+  /// Funnel walls with a thickness (dp.wall_thickness): each corner is the lip's bead, a disk of
+  /// radius T/2 at the core's start, and an edge feels its surface, d - T/2 (the same form).
+  void set_funnel_cores(const FunnelCores& cores) {
+    corners_ = {cores.lip_centre(0), cores.lip_centre(1)};
+    lip_radius_ = cores.half_thickness();
   }
   std::string_view name() const override { return "dp_wall_corners"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
@@ -49,7 +56,7 @@ class DpWallCorners final : public ForceTerm<2> {
   /// an edge's start vertex is within half the perimeter of `any`, and a corner it touches within
   /// its length (at most half the perimeter) plus half_delta of that start.
   bool polygon_may_touch(const ParticleState<2>& s, int any, double perimeter) const {
-    const double reach = perimeter + half_width(1) + half_width(0);
+    const double reach = perimeter + half_width(1) + half_width(0) + lip_radius_;
     for (const Vec<2>& c : corners_)
       if ((c - s.x[any]).squaredNorm() < reach * reach) return true;
     return false;
@@ -57,9 +64,9 @@ class DpWallCorners final : public ForceTerm<2> {
   /// False if the edge from vertex i (squared length e2) is surely out of both corners' reach:
   /// a corner in its slab within half_delta of its line is within sqrt(|e|^2 + half_delta^2) of r_i.
   bool may_touch(const ParticleState<2>& s, int i, double e2) const {
-    const double half_delta = half_width(s.species[i]);
+    const double reach = half_width(s.species[i]) + lip_radius_;
     for (const Vec<2>& c : corners_)
-      if ((c - s.x[i]).squaredNorm() < e2 + half_delta * half_delta) return true;
+      if ((c - s.x[i]).squaredNorm() < e2 + reach * reach) return true;
     return false;
   }
 
@@ -68,6 +75,7 @@ class DpWallCorners final : public ForceTerm<2> {
   const DpShape& shape_;
   double eps_;
   std::array<Vec<2>, 2> corners_;
+  double lip_radius_ = 0;  ///< 0: the corners are points (walls are lines)
 
   double half_width(int species) const { return 0.05 * shape_.l0[species]; }
   void edge_against_corners(const ParticleState<2>& s, VecArray<2>& f, int i, double& energy) const {
@@ -79,13 +87,15 @@ class DpWallCorners final : public ForceTerm<2> {
       const Vec<2> q = c - s.x[i];
       // in the slab (0 <= t <= 1) and within half_delta of the line: |q|^2 <= |e|^2 + half_delta^2,
       // whatever the edge's length (soft edges stretch to several l0)
-      if (q.squaredNorm() >= e2 + half_delta * half_delta) continue;
+      const double reach = half_delta + lip_radius_;
+      if (q.squaredNorm() >= e2 + reach * reach) continue;
       const double t = q.dot(e) / e2;
       if (t < 0 || t > 1) continue;  // beyond the ends: the vertices' own wall contact
       const double len = std::sqrt(e2);
       const Vec<2> n(e[1] / len, -e[0] / len);  // outward normal
-      const double d = q.dot(n);                 // corner outside the polygon: d > 0
-      if (d >= half_delta || d <= -half_delta) continue;
+      // corner outside the polygon: d > 0; a lip's surface (radius lip_radius_), not its centre
+      const double d = q.dot(n) - lip_radius_;
+      if (d >= half_delta || d <= -half_delta - 2 * lip_radius_) continue;
       double dU_dd;
       energy += HarmonicOverlap::energy(eps_, d, 1.0 / half_delta, dU_dd);
       // dd/dr_i = -(1 - t) n, dd/dr_j = -t n (the corner is fixed)

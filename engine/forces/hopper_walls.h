@@ -1,7 +1,10 @@
 #pragma once
 /// \file hopper_walls.h
 /// \brief Harmonic walls: U = (E_w/2)(1 - 2 d_w/sigma_m)^2 for d_w < sigma_m/2, where d_w is the
-/// distance to the nearest point of a wall (so wall ends at the orifice act as corners).
+/// distance to the nearest point of a wall (so wall ends at the orifice act as corners). DP
+/// funnel walls may have a thickness (FunnelCores): then d_w = |r - core| - T/2, negative inside
+/// the wall, and the same form (its force keeps growing inside).
+#include "../geometry/funnel_cores.h"
 #include "../geometry/hopper.h"
 #include "../neighbor/neighbor_list.h"
 #include "force_term.h"
@@ -22,6 +25,9 @@ class HopperWalls final : public ForceTerm<D> {
   HopperWalls(const Hopper<D>& hopper, const NeighborList<D>& list, double E_w, std::array<double, 2> diameters)
       : hopper_(hopper), list_(list), eps_(E_w), diameters_(diameters), own_diameters_(true) {}
   std::string_view name() const override { return "hopper_walls"; }
+  /// Funnel walls with a thickness (2D DP); nullptr or thickness 0: walls are lines. The cores
+  /// must outlive the term, and the list's wall reach must cover them (DpForceField).
+  void set_funnel_cores(const FunnelCores* cores) { cores_ = cores && cores->half_thickness() > 0 ? cores : nullptr; }
   TermOutput accumulate(const ParticleState<D>& s, VecArray<D>& f) override {
     double energy = 0;
     const int n = s.size();
@@ -36,6 +42,12 @@ class HopperWalls final : public ForceTerm<D> {
     const double half = 0.5 * (own_diameters_ ? diameters_[s.species[i]] : s.sigma(i)), inv_half = 1.0 / half;
     for (int w = 0; mask; ++w, mask >>= 1) {
       if (!(mask & 1u)) continue;
+      if constexpr (D == 2) {
+        if (cores_ && w < 2) {
+          energy += add_thick(s.x[i], w, half, inv_half, fi);
+          continue;
+        }
+      }
       const Vec<D> away = s.x[i] - hopper_.nearest_point(w, s.x[i]);
       const double d2 = away.squaredNorm();
       if (d2 >= half * half || d2 == 0) continue;
@@ -48,11 +60,24 @@ class HopperWalls final : public ForceTerm<D> {
   }
 
  private:
+  /// Funnel wall k of thickness T against a vertex of reach `half` at x: d = |x - core| - T/2.
+  double add_thick(const Vec<D>& x, int k, double half, double inv_half, Vec<D>& fi) const {
+    const Vec<D> away = x - cores_->nearest_point(k, x);
+    const double r2 = away.squaredNorm(), reach = half + cores_->half_thickness();
+    if (r2 >= reach * reach || r2 == 0) return 0;
+    const double r = std::sqrt(r2);
+    double dU_dd;
+    const double energy = HarmonicOverlap::energy(eps_, r - cores_->half_thickness(), inv_half, dU_dd);
+    fi += (-dU_dd / r) * away;
+    return energy;
+  }
+
   const Hopper<D>& hopper_;
   const NeighborList<D>& list_;
   double eps_;
   std::array<double, 2> diameters_{};
   bool own_diameters_ = false;
+  const FunnelCores* cores_ = nullptr;
 };
 
 }  // namespace beverloo

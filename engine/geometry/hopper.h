@@ -77,6 +77,16 @@ class Hopper<2> {
   double orifice_half_width() const { return w_ / 2; }
   /// Lateral distance of p from the orifice axis (|x|).
   static double lateral(const Vec<2>& p) { return std::fabs(p[0]); }
+  /// Wall k as a segment: start (a funnel wall's start is its orifice edge), unit direction,
+  /// length (INFINITY for a ray, negative for an absent wall).
+  Vec<2> wall_start(int k) const { return seg_[k].a; }
+  Vec<2> wall_direction(int k) const { return seg_[k].u; }
+  double wall_length(int k) const { return seg_[k].length; }
+  /// Unit normal of funnel wall k (0 or 1) toward the inside of the container.
+  Vec<2> funnel_inward_normal(int k) const {
+    const Vec<2> u = seg_[k].u;
+    return k == 0 ? Vec<2>(u[1], -u[0]) : Vec<2>(-u[1], u[0]);
+  }
 
  private:
   struct Segment {

@@ -19,6 +19,7 @@ inline void use_authors_dp_set(SimConfig& c) {
   c.dp.K_a_large = 1559.1; // (large)
   c.dp.K_b = 0.02626;      // 2.626 kb
   c.dp.wall_width = 1;     // a vertex l0 wide against walls
+  c.dp.wall_thickness = 1; // the floor l0 thick, its lip a bead l0 wide (hopper2D.cpp 1682-1687)
   c.E_w = 11.574;          // 1 code energy
   if (c.model == "dp_smooth") {
     c.dp.E_c = 231.48;      // kint (1 - d/delta)^2: E_c = 2 kint

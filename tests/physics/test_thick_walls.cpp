@@ -1,0 +1,144 @@
+// Funnel walls with a thickness (dp.wall_thickness, engine/geometry/funnel_cores.h): a vertex
+// that has entered the floor is pushed back out, harder the deeper it is; the lip is round; the
+// energy is continuous on every path; a wall is gone through only past its core.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "dp_support.h"
+#include "engine/geometry/funnel_cores.h"
+
+namespace beverloo {
+namespace {
+using testing::DpFixture;
+using testing::dp_config;
+
+struct ThickFloor {
+  SimConfig c;
+  DpFixture fx;
+  Hopper<2> h;
+  DpForceField ff;
+  int j;  ///< the probe vertex (polygon 1's first), its polygon kept far above
+  explicit ThickFloor(double thickness)
+      : c(config(thickness)), fx(c, {{0.0, 4.0}, {0.0, 8.0}}, 0.0, 1), h(make_hopper<2>(fx.c)),
+        ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c), j(fx.poly.first[1]) {}
+  static SimConfig config(double thickness) {
+    SimConfig c = dp_config("dp_smooth", 2);
+    c.E_w = 50;
+    c.dp.wall_width = 1;
+    c.dp.wall_thickness = thickness;
+    c.resolve_and_validate();
+    return c;
+  }
+  /// The walls' energy and force on the probe vertex placed at p.
+  double wall_energy(const Vec<2>& p, Vec<2>* force = nullptr) {
+    fx.verts.x[j] = p;
+    ff.list().build(fx.verts, h);
+    VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+    const double e = ff.terms()[4]->accumulate(fx.verts, f).energy;  // hopper_walls
+    if (force) *force = f[j];
+    return e;
+  }
+  double l0() const { return fx.shape.l0[0]; }
+};
+
+TEST(ThickWalls, AVertexInsideTheFloorIsPushedBackOutHarderTheDeeperItIs) {
+  ThickFloor t(1.0);
+  const double T = t.l0(), sigma = t.fx.shape.wall[t.fx.verts.species[t.j]], x = -4.0;
+  ASSERT_NEAR(t.ff.funnel_cores().half_thickness(), T / 2, 1e-15);
+  double previous = 0;
+  for (double y : {0.4 * sigma, 0.2 * sigma, 0.0, -0.1 * T, -0.25 * T, -0.45 * T}) {
+    Vec<2> f;
+    const double e = t.wall_energy(Vec<2>(x, y), &f);
+    // d = |y + T/2| - T/2 = y above the core: U = (E_w/2)(1 - 2 y / sigma)^2
+    const double expected = 0.5 * t.c.E_w * std::pow(1 - 2 * y / sigma, 2);
+    EXPECT_NEAR(e, expected, 1e-9 * expected) << "y = " << y;
+    EXPECT_GT(e, previous) << "y = " << y;
+    EXPECT_GT(f[1], 0) << "pushed up at y = " << y;
+    EXPECT_NEAR(f[0], 0, 1e-12);
+    previous = e;
+  }
+  // A line wall (thickness 0) gives way: below its line it pushes the vertex further down.
+  ThickFloor line(0.0);
+  Vec<2> f;
+  line.wall_energy(Vec<2>(x, -0.25 * T), &f);
+  EXPECT_LT(f[1], 0);
+}
+
+TEST(ThickWalls, ForcesAreTheEnergysGradientAroundTheLipAndInsideTheWall) {
+  ThickFloor t(1.0);
+  const Vec<2> lip = t.ff.funnel_cores().lip_centre(1);
+  const double half = t.h.orifice_half_width(), T = t.l0();
+  // the lip's bead: centred T/2 beside the orifice edge and T/2 under the floor
+  EXPECT_NEAR(lip[0], half + T / 2, 1e-12);
+  EXPECT_NEAR(lip[1], -T / 2, 1e-12);
+  const std::vector<Vec<2>> points = {
+      {half + 0.1 * T, 0.3 * T}, {half - 0.2 * T, -0.2 * T}, {half + 0.3 * T, -0.1 * T},
+      {half + 2 * T, -0.3 * T},  {half - 0.1 * T, -0.6 * T}, lip + Vec<2>(-0.6 * T, 0.55 * T)};
+  for (const Vec<2>& p : points) {
+    Vec<2> f;
+    const double e0 = t.wall_energy(p, &f);
+    EXPECT_GT(e0, 0) << p.transpose();
+    const double eps = 1e-7;
+    for (int d = 0; d < 2; ++d) {
+      Vec<2> up = p, down = p;
+      up[d] += eps;
+      down[d] -= eps;
+      const double numeric = -(t.wall_energy(up) - t.wall_energy(down)) / (2 * eps);
+      EXPECT_NEAR(f[d], numeric, 1e-5 * std::max(1.0, std::fabs(f[d]))) << p.transpose() << " component " << d;
+    }
+  }
+}
+
+TEST(ThickWalls, EnergyIsContinuousAlongAPathOverTheLipAndUnderTheFloor) {
+  // Along the floor, over the lip, down its inner side and out under the floor: no jumps.
+  ThickFloor t(1.0);
+  const double half = t.h.orifice_half_width(), T = t.l0(), gap = 0.3 * T;
+  const Vec<2> lip = t.ff.funnel_cores().lip_centre(1);
+  std::vector<double> energy;
+  const int steps = 400;
+  for (int k = 0; k <= steps; ++k) {
+    const double s = double(k) / steps;
+    Vec<2> p;
+    if (s < 0.25)  // along the floor toward the orifice, gap above it
+      p = Vec<2>(half + 2 * T - 4 * s * (1.5 * T), gap);
+    else if (s < 0.75) {  // round the bead at gap from its surface, from the top to below it
+      const double a = 0.5 * M_PI + 2 * (s - 0.25) * M_PI;
+      p = lip + (T / 2 + gap) * Vec<2>(std::cos(a), std::sin(a));
+    } else  // under the floor, outward
+      p = lip + Vec<2>(4 * (s - 0.75) * 1.5 * T, -(T / 2 + gap));
+    energy.push_back(t.wall_energy(p));
+  }
+  double largest_step = 0;
+  for (std::size_t k = 1; k < energy.size(); ++k) largest_step = std::max(largest_step, std::fabs(energy[k] - energy[k - 1]));
+  // the energy at this gap is ~ (E_w/2)(1 - 0.6)^2 = 4; 400 steps: continuous means small steps
+  EXPECT_LT(largest_step, 0.02 * 0.5 * t.c.E_w);
+  EXPECT_GT(*std::min_element(energy.begin(), energy.end()), 0.5 * 0.5 * t.c.E_w * 0.16);
+}
+
+TEST(ThickWalls, AWallIsGoneThroughOnlyPastItsCore) {
+  const Hopper<2> h(20, 4, M_PI / 2, M_PI / 2);
+  const FunnelCores cores(h, 0.2);
+  // an edge from above the floor to inside it (depth 0.05 < T/2 = 0.1): not through
+  EXPECT_EQ(cores.crossed(Vec<2>(5, 0.1), Vec<2>(5.2, -0.05)), -1);
+  // to beyond the core (depth 0.15): through the right wall
+  EXPECT_EQ(cores.crossed(Vec<2>(5, 0.1), Vec<2>(5.2, -0.15)), 1);
+  EXPECT_EQ(cores.crossed(Vec<2>(-5, 0.1), Vec<2>(-5.2, -0.15)), 0);
+  // through the orifice, past the lip: nothing crossed
+  EXPECT_EQ(cores.crossed(Vec<2>(1.8, 0.1), Vec<2>(1.8, -0.5)), -1);
+  // inclined walls: the core lies T/2 behind the wall's line, parallel to it
+  const Hopper<2> v(20, 4, M_PI / 3, M_PI / 3);
+  const FunnelCores inclined(v, 0.2);
+  const Vec<2> u = v.wall_direction(1), n = v.funnel_inward_normal(1), a = v.wall_start(1);
+  EXPECT_GT(n[1], 0);  // inward: up, toward the axis
+  EXPECT_LT(n[0], 0);
+  const Vec<2> on_wall = a + 2.0 * u;
+  EXPECT_NEAR((on_wall - inclined.nearest_point(1, on_wall)).norm(), 0.1, 1e-12);
+  EXPECT_EQ(inclined.crossed(on_wall + 0.05 * n, on_wall - 0.05 * n), -1);
+  EXPECT_EQ(inclined.crossed(on_wall + 0.05 * n, on_wall - 0.15 * n), 1);
+}
+
+}  // namespace
+}  // namespace beverloo

@@ -74,6 +74,21 @@ void DpForceField::topology_changed() {
   list_.invalidate();
 }
 
+void DpForceField::set_threads(int threads) {
+  threads_ = threads < 1 ? 1 : threads;
+  if (smooth_) smooth_->set_threads(threads_);
+}
+
+template <class Body>
+void DpForceField::for_chunks(int count, Body&& body) const {
+  if (threads_ == 1) {  // no parallel region: even a team of one costs per call in libgomp
+    for (int c = 0; c < count; ++c) body(c);
+    return;
+  }
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (int c = 0; c < count; ++c) body(c);
+}
+
 ForceReport DpForceField::compute(ParticleState<2>& s) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
@@ -93,46 +108,96 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.P_friction = o.power;
     r.max_overlap = std::max({rough_->max_overlap(), rough_core_->max_overlap(), rough_fold_->max_overlap()});
   }
-  r.U_wall = walls_.accumulate(s, s.f).energy;
-  r.U_wall += corners_.accumulate_edges(s, s.f, corner_edges_).energy;
-  r.U_gravity = gravity_.accumulate(s, s.f).energy;
-  r.P_drag = drag_.accumulate(s, s.f).power;
+  add_vertex_terms(s, r);
   return r;
+}
+
+void DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r) {
+  // Each vertex takes the walls' force, then the corners' (edges near the orifice, few: in
+  // order, one thread), then gravity and drag: the order of the terms one after another.
+  const int n = s.size(), chunks = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
+  if (static_cast<int>(chunk_sums_.size()) < 2 * chunks) chunk_sums_.resize(2 * chunks);  // only when N grows
+  double* sums = chunk_sums_.data();
+  auto range = [n](int c) { return std::pair<int, int>{c * kVerticesPerChunk, std::min(n, (c + 1) * kVerticesPerChunk)}; };
+  for_chunks(chunks, [&](int c) {
+    const auto [begin, end] = range(c);
+    double energy = 0;
+    for (int i = begin; i < end; ++i) energy += walls_.add_to(s, i, s.f[i]);
+    sums[c] = energy;
+  });
+  for (int c = 0; c < chunks; ++c) r.U_wall += sums[c];
+  r.U_wall += corners_.accumulate_edges(s, s.f, corner_edges_).energy;
+  const double g = gravity_.g();
+  const bool drag = drag_.active();
+  for_chunks(chunks, [&](int c) {
+    const auto [begin, end] = range(c);
+    double energy = 0, power = 0;
+    for (int i = begin; i < end; ++i) {
+      if (g != 0) energy += gravity_.add_to(s, i, s.f[i]);
+      if (drag) power += drag_.add_to(s, i, s.f[i]);
+    }
+    sums[2 * c] = energy;
+    sums[2 * c + 1] = power;
+  });
+  for (int c = 0; c < chunks; ++c) {
+    r.U_gravity += sums[2 * c];
+    r.P_drag += sums[2 * c + 1];
+  }
 }
 
 double DpForceField::shape_pass(ParticleState<2>& s) {
   // Each vertex's force takes contributions of its own polygon's shape terms only, so polygon
   // by polygon (area, then segments, then bending within each) it sums the same numbers in the
-  // same order as the three terms one after another over all polygons: the same bits, with
+  // same order as the three terms one after another over all polygons: the same forces, with
   // one pass over the positions and one square root per edge instead of two
-  // (tests/physics/test_dp_forces.cpp, FusedShapePassEqualsTheTermsOneAfterAnother).
+  // (tests/physics/test_dp_forces.cpp, FusedShapePassEqualsTheTermsOneAfterAnother). Polygons
+  // go in fixed chunks (any thread count: the same chunks, their sums in chunk order).
+  const int np = poly_.polygons(), chunks = (np + kPolygonsPerChunk - 1) / kPolygonsPerChunk;
+  if (static_cast<int>(shape_chunks_.size()) < chunks) shape_chunks_.resize(chunks);  // only when N grows
+  for_chunks(chunks, [&](int c) {
+    ShapeChunk& ch = shape_chunks_[c];
+    ch.U_area = ch.U_length = ch.U_bending = ch.longest = 0;
+    ch.outgrown = false;
+    ch.corner_edges.clear();
+    ch.fold_vertices.clear();
+    PolygonEdges& edges = ch.edges;
+    for (int m = c * kPolygonsPerChunk, end = std::min(np, (c + 1) * kPolygonsPerChunk); m < end; ++m) {
+      edges.measure(poly_, s.x, m);
+      area_.add_polygon(s, s.f, m, ch.U_area);
+      segments_.add_polygon(s, s.f, edges, ch.U_length, ch.longest);
+      bending_.add_polygon(s, s.f, edges, ch.U_bending);
+      const int n = edges.count;
+      double perimeter = 0;
+      for (int k = 0; k < n; ++k) {
+        const int i = edges.first + k;
+        ch.outgrown = ch.outgrown || edges.sq[k] > edge_bound_[i] * edge_bound_[i];
+        perimeter += edges.len[k];
+      }
+      // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
+      for (int k = 0; smooth_ && k < n; ++k) {
+        const int i = edges.first + k, in = poly_.prev[i] - edges.first;
+        if (smooth_->fold_may_act(edges.e[in].dot(edges.e[k]), edges.sq[in], edges.sq[k], s.species[i]))
+          ch.fold_vertices.push_back(i);  // grows to its largest once, then no allocation
+      }
+      // most polygons are far from the orifice: one test for the polygon, then one per edge
+      if (!corners_.polygon_may_touch(s, edges.first, perimeter)) continue;
+      for (int k = 0; k < n; ++k)
+        if (corners_.may_touch(s, edges.first + k, edges.sq[k])) ch.corner_edges.push_back(edges.first + k);
+    }
+  });
   double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
   bool outgrown = false;
   corner_edges_.clear();
   fold_vertices_.clear();
-  for (int m = 0; m < poly_.polygons(); ++m) {
-    edges_.measure(poly_, s.x, m);
-    area_.add_polygon(s, s.f, m, U_area);
-    segments_.add_polygon(s, s.f, edges_, U_length, longest);
-    bending_.add_polygon(s, s.f, edges_, U_bending);
-    const int n = edges_.count;
-    double perimeter = 0;
-    for (int k = 0; k < n; ++k) {
-      const int i = edges_.first + k;
-      outgrown = outgrown || edges_.sq[k] > edge_bound_[i] * edge_bound_[i];
-      perimeter += edges_.len[k];
-    }
-    // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
-    for (int k = 0; smooth_ && k < n; ++k) {
-      const int i = edges_.first + k, in = poly_.prev[i] - edges_.first;
-      if (smooth_->fold_may_act(edges_.e[in].dot(edges_.e[k]), edges_.sq[in], edges_.sq[k], s.species[i]))
-        fold_vertices_.push_back(i);  // capacity reserved: no allocation
-    }
-    // most polygons are far from the orifice: one test for the polygon, then one per edge
-    if (!corners_.polygon_may_touch(s, edges_.first, perimeter)) continue;
-    for (int k = 0; k < n; ++k)
-      if (corners_.may_touch(s, edges_.first + k, edges_.sq[k]))
-        corner_edges_.push_back(edges_.first + k);  // capacity reserved: no allocation
+  for (int c = 0; c < chunks; ++c) {  // in chunk order: the lists stay increasing
+    const ShapeChunk& ch = shape_chunks_[c];
+    U_area += ch.U_area;
+    U_length += ch.U_length;
+    U_bending += ch.U_bending;
+    longest = std::max(longest, ch.longest);
+    outgrown = outgrown || ch.outgrown;
+    corner_edges_.insert(corner_edges_.end(), ch.corner_edges.begin(), ch.corner_edges.end());  // capacity reserved
+    fold_vertices_.insert(fold_vertices_.end(), ch.fold_vertices.begin(), ch.fold_vertices.end());
   }
   segments_.set_longest_edge(longest);
   edge_outgrown_ = outgrown;

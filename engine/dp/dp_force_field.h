@@ -33,6 +33,14 @@ class DpForceField {
 
   /// Zeroes s.f, brings the vertex list up to date and adds every term. O(vertices).
   ForceReport compute(ParticleState<2>& s);
+  /// OpenMP threads for the evaluation: the shape terms by polygons, walls, gravity and drag
+  /// by vertices, the smooth contact by list rows (its force writes replayed in order). Work
+  /// is cut into fixed chunks whatever the count and every sum is taken chunk by chunk in
+  /// chunk order, so every count gives the same forces and energies, bit for bit.
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+  static constexpr int kPolygonsPerChunk = 64;
+  static constexpr int kVerticesPerChunk = 1024;
   void set_dissipation(bool on);
   void set_gravity(double g) { gravity_.set_g(g); }
   NeighborList<2>& list() { return list_; }
@@ -90,9 +98,25 @@ class DpForceField {
   Gravity<2> gravity_;
   Drag<2> drag_;
   DpWallCorners corners_;
+  /// Runs body(chunk) for chunks 0 .. count-1: on threads_ threads, or in a plain loop (no
+  /// parallel region at one thread).
+  template <class Body>
+  void for_chunks(int count, Body&& body) const;
+  /// Walls, orifice corners, gravity and drag, vertex chunk by vertex chunk.
+  void add_vertex_terms(ParticleState<2>& s, ForceReport& r);
+
   const Hopper<2>& hopper_;
   FunnelCores cores_;             ///< the funnel walls' cores (thickness 0: unused)
-  PolygonEdges edges_;            ///< the polygon at hand in shape_pass
+  /// One chunk of kPolygonsPerChunk polygons in the shape pass: its scratch and its results.
+  struct ShapeChunk {
+    PolygonEdges edges;
+    double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
+    bool outgrown = false;
+    std::vector<int> corner_edges, fold_vertices;
+  };
+  std::vector<ShapeChunk> shape_chunks_;
+  std::vector<double> chunk_sums_;  ///< per vertex chunk: energies or powers of one term
+  int threads_ = 1;
   bool edge_outgrown_ = false;    ///< set by shape_pass
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing
   std::vector<int> fold_vertices_; ///< vertices at which the smooth contact's fold pairs may act, increasing

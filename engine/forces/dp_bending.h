@@ -28,14 +28,13 @@ class DpBending final : public ForceTerm<2> {
     return {energy, 0};
   }
   /// The measured polygon's part: its forces into f, its energy onto `energy`. See
-  /// DpArea::add_polygon for why per polygon.
-  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, const PolygonEdges& edges, double& energy) {
+  /// DpArea::add_polygon for why per polygon. Uses edges' scratch (unit, inv_len): const, so
+  /// threads with their own PolygonEdges may call it for different polygons at once.
+  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, PolygonEdges& edges, double& energy) const {
     if (k_ == 0) return;
     const int first = edges.first, n = edges.count;
-    if (static_cast<int>(unit_.size()) < n) {  // only for a polygon larger than any before
-      unit_.resize(n);
-      inv_len_.resize(n);
-    }
+    VecArray<2>& unit_ = edges.unit;
+    std::vector<double>& inv_len_ = edges.inv_len;
     for (int k = 0; k < n; ++k) {
       inv_len_[k] = 1.0 / edges.len[k];
       unit_[k] = edges.e[k] * inv_len_[k];
@@ -58,8 +57,6 @@ class DpBending final : public ForceTerm<2> {
   const PolygonSet& p_;
   double k_;
   double c_of_[2];
-  VecArray<2> unit_;             ///< per edge of the polygon at hand
-  std::vector<double> inv_len_;  ///< per edge of the polygon at hand
   PolygonEdges edges_;           ///< accumulate()'s own scratch
 };
 

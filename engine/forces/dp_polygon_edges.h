@@ -17,6 +17,9 @@ struct PolygonEdges {
   VecArray<2> e;            ///< edge vectors r_next(i) - r_i
   std::vector<double> sq;   ///< |e_k|^2 (Eigen's squaredNorm())
   std::vector<double> len;  ///< |e_k| = sqrt(|e_k|^2), as Eigen's norm() computes it (the terms' own bits)
+  // bending's scratch for the same polygon (one PolygonEdges per thread's share of polygons)
+  VecArray<2> unit;             ///< e_k / |e_k|
+  std::vector<double> inv_len;  ///< 1 / |e_k|
 
   /// Measures polygon m. Allocates only when a polygon has more vertices than any before.
   void measure(const PolygonSet& p, const VecArray<2>& x, int m) {
@@ -26,6 +29,8 @@ struct PolygonEdges {
       e.resize(n);
       sq.resize(n);
       len.resize(n);
+      unit.resize(n);
+      inv_len.resize(n);
     }
     for (int k = 0; k < n; ++k) {
       const int i = first + k;

@@ -1,5 +1,6 @@
 #include "dp_smooth_contact.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "harmonic_overlap.h"
@@ -22,9 +23,22 @@ struct DpSmoothContact::View {
   double eps, eps_vertex;
 };
 
-template <DpSmoothContact::Mode kMode>
-void DpSmoothContact::edge_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov,
-                                  FoldCap cap) const {
+/// Where the evaluation's force writes go: straight into the force array, or (threads) into a
+/// chunk's log that is replayed in chunk order, so that every force sums the same numbers in the
+/// same order whatever the thread count (x - y and x + (-y) are the same IEEE operation).
+struct DpSmoothContact::DirectSink {
+  Vec<2>* f;
+  void add(int k, const Vec<2>& v) { f[k] += v; }
+  void sub(int k, const Vec<2>& v) { f[k] -= v; }
+};
+struct DpSmoothContact::LogSink {
+  std::vector<ForceWrite>* log;
+  void add(int k, const Vec<2>& v) { log->push_back({k, v}); }
+  void sub(int k, const Vec<2>& v) { log->push_back({k, -v}); }
+};
+
+template <DpSmoothContact::Mode kMode, class Sink>
+void DpSmoothContact::edge_vertex(const View& s, int a, int b, Acc& acc, Sink& sink, FoldCap cap) const {
   const int an = s.next[a];
   const Vec<2> ra = s.x[a];
   const Vec<2> e = s.x[an] - ra;
@@ -76,16 +90,16 @@ void DpSmoothContact::edge_vertex(const View& s, int a, int b, double& energy, d
   }
   if constexpr (kMode != Mode::FrictionOnly) {
     double law_ov;  // the law's overlap 1 - d * (1/dmn); max_ov keeps its own d / dmn (its bits)
-    const double repulsion = NormalLaw::force(eps, 1.0 / dmn, d, energy, law_ov);  // -dU/dd
+    const double repulsion = NormalLaw::force(eps, 1.0 / dmn, d, acc.energy, law_ov);  // -dU/dd
     const double ov = 1.0 - d / dmn;
-    if (ov > max_ov) {
-      max_ov = ov;
-      worst_ = {b, a};
+    if (ov > acc.max_ov) {
+      acc.max_ov = ov;
+      acc.worst = {b, a};
     }
     const Vec<2> fb = repulsion * dir;  // on the vertex, away from the edge
-    s.f[b] += fb;
-    s.f[a] -= w_start * fb;
-    s.f[an] -= w_end * fb;
+    sink.add(b, fb);
+    sink.sub(a, w_start * fb);
+    sink.sub(an, w_end * fb);
   }
   if constexpr (kMode != Mode::Repulsion) {
     if (s.owner[a] == s.owner[b]) return;  // kinetic friction acts between particles only
@@ -93,16 +107,15 @@ void DpSmoothContact::edge_vertex(const View& s, int a, int b, double& energy, d
     const Vec<2> rel = s.v[b] - v_contact;
     // split along the contact normal (the edge's normal, or the corner's vertex-vertex line)
     const Vec<2> ff = law_.split() ? kinetic_friction_force<2>(law_, s.v[b], v_contact, dir) : Vec<2>(-law_.mu_t * rel);
-    power += ff.dot(rel);
-    s.f[b] += ff;
-    s.f[a] -= w_start * ff;
-    s.f[an] -= w_end * ff;
+    acc.power += ff.dot(rel);
+    sink.add(b, ff);
+    sink.sub(a, w_start * ff);
+    sink.sub(an, w_end * ff);
   }
 }
 
-template <DpSmoothContact::Mode kMode>
-void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double& energy, double& power,
-                                      double& max_ov) const {
+template <DpSmoothContact::Mode kMode, class Sink>
+void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, Acc& acc, Sink& sink) const {
   // The same expression for the same pair of points wherever it is evaluated, so that the
   // nearer-end test of an edge gives one answer from either end (exactly one end counts it).
   auto dist2 = [&](int u) { return (s.x[b] - s.x[u]).squaredNorm(); };
@@ -120,15 +133,15 @@ void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double& energ
     return da <= (dmn * dmn + 0.25 * (s.x[end] - s.x[start]).squaredNorm()) * (1 + 1e-9);
   };
   if (b != s.next[an] && da <= dist2(an) && may_touch(a, an))
-    edge_vertex<kMode>(s, a, b, energy, power, max_ov);  // edge a -> next
+    edge_vertex<kMode>(s, a, b, acc, sink);  // edge a -> next
   if (b != s.prev[ap] && da < dist2(ap) && may_touch(ap, a))
-    edge_vertex<kMode>(s, ap, b, energy, power, max_ov);  // edge prev -> a
+    edge_vertex<kMode>(s, ap, b, acc, sink);  // edge prev -> a
   if constexpr (kMode != Mode::FrictionOnly)
-    if (corners_ && da < dmn * dmn && b != an && b != ap) corner_in_both_slabs<kMode>(s, a, b, da, dmn, energy);
+    if (corners_ && da < dmn * dmn && b != an && b != ap) corner_in_both_slabs(s, a, b, da, dmn, acc, sink);
 }
 
-template <DpSmoothContact::Mode kMode>
-void DpSmoothContact::corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, double& energy) const {
+template <class Sink>
+void DpSmoothContact::corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, Acc& acc, Sink& sink) const {
   // Vertex b in the slabs of both edges at a (a concave corner seen from b, or b inside the
   // polygon): each slab counts b, and each slab's energy at its boundary through a is the
   // corner's, (E_c/2)(1 - |r_b - r_a|/delta)^2. Subtracting that once here makes the sum
@@ -146,22 +159,55 @@ void DpSmoothContact::corner_in_both_slabs(const View& s, int a, int b, double d
   if (d == 0) return;
   double corner_energy = 0, law_ov;
   const double repulsion = NormalLaw::force(s.eps, 1.0 / dmn, d, corner_energy, law_ov);
-  energy -= corner_energy;
+  acc.energy -= corner_energy;
   const Vec<2> fb = (repulsion / d) * (rb - ra);  // the corner's repulsion on b, taken away
-  s.f[b] -= fb;
-  s.f[a] += fb;
+  sink.sub(b, fb);
+  sink.add(a, fb);
 }
 
 template <DpSmoothContact::Mode kMode>
-TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices) const {
-  double energy = 0, power = 0, max_ov = 0;
+TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices,
+                                 bool one_thread) const {
   const int n = s.size();
   const View view{s.x.data(), s.v.data(),  s.species.data(), p_.next.data(), p_.prev.data(), p_.owner.data(),
                   f.data(),   {width_[0], width_[1]}, eps_, eps_vertex_};
-  for (int i = 0; pairs_ && i < n; ++i) {
-    for (const int* p = list_.row_begin(i), *end = list_.row_end(i); p != end; ++p) {
-      edges_at_vertex<kMode>(view, i, *p, energy, power, max_ov);
-      edges_at_vertex<kMode>(view, *p, i, energy, power, max_ov);
+  // The list's rows in fixed chunks of vertices; each chunk's sums (energy, power, largest
+  // overlap) are its own and are added in chunk order, whatever the thread count.
+  const int chunks = pairs_ ? (n + kRowsPerChunk - 1) / kRowsPerChunk : 0;
+  if (static_cast<int>(chunk_acc_.size()) < chunks) chunk_acc_.resize(chunks);  // only when N grows
+  auto rows = [&](int c, auto& sink) {
+    Acc acc;
+    for (int i = c * kRowsPerChunk, end = std::min(n, (c + 1) * kRowsPerChunk); i < end; ++i) {
+      for (const int* p = list_.row_begin(i), *e = list_.row_end(i); p != e; ++p) {
+        edges_at_vertex<kMode>(view, i, *p, acc, sink);
+        edges_at_vertex<kMode>(view, *p, i, acc, sink);
+      }
+    }
+    chunk_acc_[c] = acc;
+  };
+  if (threads_ == 1 || one_thread) {
+    DirectSink sink{f.data()};
+    for (int c = 0; c < chunks; ++c) rows(c, sink);
+  } else {
+    if (static_cast<int>(logs_.size()) < chunks) logs_.resize(chunks);  // only when N grows
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (int c = 0; c < chunks; ++c) {
+      logs_[c].clear();  // keeps its capacity: no allocation once the logs have grown
+      LogSink sink{&logs_[c]};
+      rows(c, sink);
+    }
+    Vec<2>* F = f.data();
+    for (int c = 0; c < chunks; ++c)
+      for (const ForceWrite& w : logs_[c]) F[w.vertex] += w.force;
+  }
+  Acc total;
+  for (int c = 0; c < chunks; ++c) {
+    const Acc& a = chunk_acc_[c];
+    total.energy += a.energy;
+    total.power += a.power;
+    if (a.max_ov > total.max_ov) {  // the first largest, as one pass in row order finds it
+      total.max_ov = a.max_ov;
+      total.worst = a.worst;
     }
   }
   // Folds: each edge against the vertex one place beyond either of its ends, of its own polygon
@@ -173,9 +219,11 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, cons
   // eps (1 - l/width)^2), which keeps it from collapsing through zero, another way to fold.
   // Not for the rough core (l0/2 is within reach of a compressed edge, and the core has no
   // caps): the rough model has a narrower term of its own for this (rough_fold_barrier).
+  // Few vertices: one thread, after the pairs.
+  DirectSink sink{f.data()};
   auto fold_pairs_at = [&](int k) {
-    edge_vertex<kMode>(view, view.prev[k], view.next[k], energy, power, max_ov, FoldCap::AtEnd);  // edge prev(k) -> k
-    edge_vertex<kMode>(view, k, view.prev[k], energy, power, max_ov, FoldCap::AtStart);         // edge k -> next(k)
+    edge_vertex<kMode>(view, view.prev[k], view.next[k], total, sink, FoldCap::AtEnd);  // edge prev(k) -> k
+    edge_vertex<kMode>(view, k, view.prev[k], total, sink, FoldCap::AtStart);         // edge k -> next(k)
   };
   if (fold_vertices) {
     for (const int k : *fold_vertices) fold_pairs_at(k);
@@ -195,8 +243,11 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, cons
       fold_pairs_at(k);
     }
   }
-  if constexpr (kMode != Mode::FrictionOnly) max_overlap_ = max_ov;
-  return {energy, power};
+  if constexpr (kMode != Mode::FrictionOnly) {
+    max_overlap_ = total.max_ov;
+    worst_ = total.worst;
+  }
+  return {total.energy, total.power};
 }
 
 TermOutput DpSmoothContact::accumulate(const ParticleState<2>& s, VecArray<2>& f) {
@@ -211,7 +262,7 @@ TermOutput DpSmoothContact::accumulate_with_folds(const ParticleState<2>& s, Vec
 
 void DpSmoothContact::friction_forces(const ParticleState<2>& s, VecArray<2>& out) const {
   out.assign(s.size(), Vec<2>::Zero());
-  if (law_.active()) loop<Mode::FrictionOnly>(s, out);
+  if (law_.active()) loop<Mode::FrictionOnly>(s, out, nullptr, /*one_thread=*/true);
 }
 
 }  // namespace beverloo

@@ -111,6 +111,10 @@ class DpSmoothContact final : public ForceTerm<2> {
   bool fold_may_act(double in_dot_out, double sq_in, double sq_out, int species) const {
     return folds_ && !(in_dot_out > 0 && sq_in >= width2_[species] && sq_out >= width2_[species]);
   }
+  /// OpenMP threads for the pairs: rows in fixed chunks (kRowsPerChunk vertices), each chunk's
+  /// force writes logged and replayed in chunk order, so every count gives the same bits.
+  void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+  static constexpr int kRowsPerChunk = 1024;
   /// Friction force on each vertex alone (for the |F^mu| observable); overwrites out.
   void friction_forces(const ParticleState<2>& s, VecArray<2>& out) const;
   void set_friction_enabled(bool on) { friction_on_ = on; }
@@ -125,20 +129,32 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// (contact_laws.h): the harmonic law of the paper. The DP models have no job parameter
   /// that chooses another yet; one would make this a registry row as SpContact does.
   using NormalLaw = HarmonicOverlap;
+  /// one_thread: whatever set_threads() said (friction_forces(), an observable, runs alone)
   template <Mode kMode>
-  TermOutput loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices = nullptr) const;
+  TermOutput loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices = nullptr,
+                  bool one_thread = false) const;
   struct View;  ///< the state's and the polygons' arrays as pointers (the .cpp)
+  struct DirectSink;  ///< force writes into the array
+  struct LogSink;     ///< force writes into a chunk's log
+  /// One chunk's running sums (and the whole evaluation's).
+  struct Acc {
+    double energy = 0, power = 0, max_ov = 0;
+    std::pair<int, int> worst{-1, -1};
+  };
+  struct ForceWrite {
+    int vertex;
+    Vec<2> force;
+  };
   /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.
-  template <Mode kMode>
-  void edges_at_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov) const;
+  template <Mode kMode, class Sink>
+  void edges_at_vertex(const View& s, int a, int b, Acc& acc, Sink& sink) const;
   /// Vertex b in both slabs of the edges at a, within delta of a: one corner energy taken away.
-  template <Mode kMode>
-  void corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, double& energy) const;
+  template <class Sink>
+  void corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, Acc& acc, Sink& sink) const;
   /// Fold pairs (same polygon, b one place beyond an end of edge a) cap the edge at that end.
   enum class FoldCap { None, AtStart, AtEnd };
-  template <Mode kMode>
-  void edge_vertex(const View& s, int a, int b, double& energy, double& power, double& max_ov,
-                   FoldCap cap = FoldCap::None) const;
+  template <Mode kMode, class Sink>
+  void edge_vertex(const View& s, int a, int b, Acc& acc, Sink& sink, FoldCap cap = FoldCap::None) const;
 
   DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
                   FrictionLaw friction, bool corners, const char* name)
@@ -157,9 +173,12 @@ class DpSmoothContact final : public ForceTerm<2> {
   bool folds_;          ///< each edge against the vertex one beyond either end, same polygon
   const char* name_;
   bool friction_on_ = true;
+  int threads_ = 1;
   // written by the evaluation loop, which friction_forces() (const) shares
   mutable double max_overlap_ = 0;
   mutable std::pair<int, int> worst_{-1, -1};
+  mutable std::vector<Acc> chunk_acc_;                  ///< per chunk of rows
+  mutable std::vector<std::vector<ForceWrite>> logs_;  ///< per chunk of rows (threads > 1)
 };
 
 }  // namespace beverloo

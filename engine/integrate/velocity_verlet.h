@@ -80,14 +80,16 @@ bool kick(ParticleState<D>& s, double dt, int threads = 1) {
   return bad == 0;
 }
 
+/// threads: for the drift and the kick (each item's update is its own: any count, same bits).
 template <int D, class FF, class Hook>
-StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt, Hook&& between_drift_and_force) {
+StepReport velocity_verlet_step(ParticleState<D>& s, FF& ff, double dt, Hook&& between_drift_and_force,
+                                int threads = 1) {
   static const VecArray<D> kNoReference;
-  drift(s, dt, kNoReference);
+  drift(s, dt, kNoReference, threads);
   between_drift_and_force(s);  // may take items out (a draining hopper): the kick counts them again
   StepReport r;
   r.forces = ff.compute(s);
-  r.finite = kick(s, dt);
+  r.finite = kick(s, dt, threads);
   ++s.step;
   return r;
 }

@@ -66,7 +66,7 @@ StepReport DpModel::step(ParticleState<2>& bodies, double dt, StepHook<2>& hook)
   const StepReport r = velocity_verlet_step(dp_.verts(), dp_.forces(), dt, [&](ParticleState<2>&) {
     dp_.sync_bodies(bodies);  // exits are counted when the centroid crosses the orifice
     hook.between_drift_and_force(bodies, bodies_list_, true);
-  });
+  }, dp_.forces().threads());
   bodies.step = dp_.verts().step;
   dp_.sync_bodies(bodies);
   return r;

@@ -32,6 +32,9 @@ class DpModel final : public HopperModel<2> {
     bodies_list_.invalidate();
   }
   void body_friction(const ParticleState<2>&, VecArray<2>& out) override { dp_.body_friction(out); }
+  /// The vertex force field's chunks and the integrator's loops on `threads` threads: the same
+  /// bits for every count (DpForceField::set_threads).
+  void set_threads(int threads) override { dp_.forces().set_threads(threads); }
   void check_containment(double t) const override { dp_.check_vertices(t); }
   std::function<bool(int, const Vec<2>&)> spot_test() override {
     return [this](int m, const Vec<2>& centre) { return dp_.spot_is_free(m, centre); };

@@ -216,7 +216,7 @@ void add_bench_command(CLI::App& app, int& exit_status) {
   cmd->add_option("--skin", a->skin, "Verlet skin (default: the job default)")->check(CLI::PositiveNumber);
   cmd->add_option("--json", a->json_out, "also write the results as JSON to this file (- for stdout)");
   cmd->add_option("--baseline", a->baseline, "an earlier --json output: print each case's ratio to it");
-  cmd->add_option("--threads", a->threads, "threads per run (SP cases; the same results for every count)")
+  cmd->add_option("--threads", a->threads, "threads per run (SP and DP; the same results for every count)")
       ->capture_default_str();
   cmd->callback([a, &exit_status] {
     exit_status = guarded("bench", [&] {

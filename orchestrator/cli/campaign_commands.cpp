@@ -281,7 +281,7 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
     cmd->add_option("--workers", opts->workers, "worker processes (default: the number of cores over --threads)")
         ->check(CLI::Range(1, 4096));
     cmd->add_option("--threads", opts->threads,
-                    "threads per job (SP; the same results for every count): locally workers x threads must fit the "
+                    "threads per job (SP and DP; the same results for every count): locally workers x threads must fit the "
                     "cores, on Slurm each task asks --cpus-per-task=THREADS (default 1)")
         ->check(CLI::Range(1, 4096));
     cmd->add_option("--max-retries", opts->max_retries, "retries per job for blow-ups and I/O errors")->check(CLI::Range(0, 100));

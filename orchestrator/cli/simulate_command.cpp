@@ -180,7 +180,7 @@ void add_simulate_command(CLI::App& app, int& exit_status) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--threads", args->threads,
-                  "threads for this job's steps (SP); every count gives the same result, bit for bit")
+                  "threads for this job's steps (SP and DP); every count gives the same result, bit for bit")
       ->capture_default_str();
   cmd->add_option("--progress", args->progress, "auto | terminal | log | quiet")
       ->check(CLI::IsMember({"auto", "terminal", "log", "quiet"}));

@@ -14,6 +14,20 @@ diff <(result_data "$WORK/t1/result.h5") <(result_data "$WORK/t2/result.h5") > "
   || { head -20 "$WORK/diff"; fail "--threads 2 gives another result than --threads 1"; }
 echo "ok  simulate --threads 1 and 2: bit-identical result"
 
+# a DP job (engine 0.5.0: its force field in fixed chunks): the same bits on 1 and 2 threads
+cat > "$WORK/dp.json" <<'JOB'
+{"model": "dp_smooth", "N": 200, "W": 20, "w": 5, "zeta": 0, "mu": 8.5052, "mu_n": 0, "seed": 5,
+ "dp": {"K_l": 88.29, "K_l_large": 123.62, "K_a": 3055.8, "K_a_large": 1559.1, "K_b": 0.02626, "wall_width": 1,
+        "wall_thickness": 1, "E_c": 231.48, "E_c_vertex": 115.74, "contact_width": 0.2},
+ "E_w": 11.574, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5},
+ "run": {"t_max": 3, "target_rel_err": 1e-9, "min_window": 1, "min_transient": 1, "rate_bin": 0.1}}
+JOB
+"$BIN" simulate "$WORK/dp.json" -o "$WORK/dp1" --threads 1 --progress quiet > /dev/null
+"$BIN" simulate "$WORK/dp.json" -o "$WORK/dp2" --threads 2 --progress quiet > /dev/null
+diff <(result_data "$WORK/dp1/result.h5") <(result_data "$WORK/dp2/result.h5") > "$WORK/diff" \
+  || { head -20 "$WORK/diff"; fail "DP: --threads 2 gives another result than --threads 1"; }
+echo "ok  DP simulate --threads 1 and 2: bit-identical result"
+
 # interrupted with two threads, resumed with one
 "$BIN" simulate "$WORK/job.json" -o "$WORK/mixed" --threads 2 --progress quiet > /dev/null 2>&1 &
 pid=$!

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -51,6 +52,12 @@ class Coordinator {
   int run(const std::atomic<bool>* stop) {
     // every attempt left in flight by an earlier coordinator is accounted for before anything new starts
     reconcile();
+    // a campaign begun by another engine: its pending jobs are not this binary's to run
+    if (const std::int64_t n = store_.set_aside_other_engines(campaign_))
+      std::fprintf(stderr,
+                   "[beverloo] %lld pending job(s) of another engine version cancelled: this is engine %s, whose own "
+                   "jobs for the same points the sweep holds (campaign status lists the versions)\n",
+                   (long long)n, BEVERLOO_VERSION);
     const auto start = Clock::now();
     auto last_timeout_check = start;
     initial_ = store_.counts(campaign_);

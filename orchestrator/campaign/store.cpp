@@ -110,8 +110,9 @@ std::optional<ClaimedJob> CampaignStore::claim_next(std::int64_t campaign, const
   db::Transaction tx(db_);
   db::Statement pick = db_.prepare(
       "SELECT j.key, j.dir, j.job_json FROM jobs j JOIN campaign_jobs c ON c.job_key = j.key "
-      "WHERE c.campaign_id = ?1 AND j.state = 'pending' ORDER BY c.point_index LIMIT 1");
+      "WHERE c.campaign_id = ?1 AND j.state = 'pending' AND j.engine_version = ?2 ORDER BY c.point_index LIMIT 1");
   pick.bind(1, campaign);
+  pick.bind(2, BEVERLOO_VERSION);  // a job of another engine would be stored as its result
   if (!pick.step()) return std::nullopt;
   ClaimedJob a;
   a.key = pick.get_text(0);
@@ -333,9 +334,22 @@ StateCounts CampaignStore::counts(std::int64_t campaign) {
 std::int64_t CampaignStore::retry(std::int64_t campaign, bool include_cancelled) {
   db::Transaction tx(db_);
   db_.prepare(std::string("UPDATE jobs SET state = 'pending', retries_used = 0 WHERE key IN (SELECT job_key FROM campaign_jobs "
-                          "WHERE campaign_id = ?1) AND state IN ('failed'") +
+                          "WHERE campaign_id = ?1) AND engine_version = ?2 AND state IN ('failed'") +
               (include_cancelled ? ", 'cancelled')" : ")"))
       .bind(1, campaign)
+      .bind(2, BEVERLOO_VERSION)
+      .run();
+  const std::int64_t n = db_.changes();
+  tx.commit();
+  return n;
+}
+
+std::int64_t CampaignStore::set_aside_other_engines(std::int64_t campaign) {
+  db::Transaction tx(db_);
+  db_.prepare("UPDATE jobs SET state = 'cancelled' WHERE key IN (SELECT job_key FROM campaign_jobs WHERE campaign_id = ?1) "
+              "AND state = 'pending' AND engine_version != ?2")
+      .bind(1, campaign)
+      .bind(2, BEVERLOO_VERSION)
       .run();
   const std::int64_t n = db_.changes();
   tx.commit();
@@ -358,7 +372,7 @@ const char* job_state_meaning(const std::string& state) {
   if (state == "done") return "finished; its result is stored (the runs view's status says how it ended)";
   if (state == "clogged") return "the flow stopped for good: no exit for run.t_clog (Q = 0, a result)";
   if (state == "failed") return "every attempt failed (blow-up, I/O); see the attempts table";
-  if (state == "cancelled") return "cancelled by `beverloo campaign cancel`";
+  if (state == "cancelled") return "cancelled by `beverloo campaign cancel`, or set aside as a job of another engine version";
   if (state == "running") return "an attempt is in flight";
   if (state == "pending") return "not started yet";
   return "";

@@ -84,6 +84,10 @@ class CampaignStore {
   std::int64_t retry(std::int64_t campaign, bool include_cancelled);
   /// Pending jobs of the campaign to cancelled; returns how many.
   std::int64_t cancel(std::int64_t campaign);
+  /// Pending jobs of the campaign expanded by another engine version (a campaign begun with an
+  /// older binary): cancelled, never run by this one, whose results they would be stored as.
+  /// The sweep expanded by this binary holds its own jobs for the same points. Returns how many.
+  std::int64_t set_aside_other_engines(std::int64_t campaign);
 
  private:
   db::Database& db_;

@@ -101,6 +101,24 @@ int status_command(const std::string& dir) {
                                                           {"cancelled", c.cancelled}, {"running", c.running}, {"pending", c.pending}};
   for (const auto& [state, count] : states)
     if (count > 0) std::printf("  %-10s %s\n", state, job_state_meaning(state));
+  // a campaign begun with another engine: how many jobs each version holds, and in which states
+  db::Statement engines = db.prepare(
+      "SELECT j.engine_version, count(*), sum(j.state IN ('done', 'clogged')), sum(j.state = 'cancelled') FROM jobs j "
+      "JOIN campaign_jobs cj ON cj.job_key = j.key WHERE cj.campaign_id = ?1 GROUP BY 1 ORDER BY 1 DESC");
+  engines.bind(1, id);
+  std::vector<std::string> versions;
+  bool another = false;
+  while (engines.step()) {
+    another = another || engines.get_text(0) != BEVERLOO_VERSION;
+    versions.push_back(terminal_safe(engines.get_text(0)) + ": " + std::to_string(engines.get_int(1)) + " jobs (" +
+                       std::to_string(engines.get_int(2)) + " with a result, " + std::to_string(engines.get_int(3)) +
+                       " cancelled)");
+  }
+  if (another) {
+    std::printf("engines      this is %s; jobs by the engine that expanded them:", BEVERLOO_VERSION);
+    for (const std::string& v : versions) std::printf(" %s;", v.c_str());
+    std::printf(" a job runs only on its own engine\n");
+  }
   db::Statement endings = db.prepare(
       "SELECT r.status, count(*) FROM results r JOIN campaign_jobs cj ON cj.job_key = r.job_key "
       "WHERE cj.campaign_id = ?1 GROUP BY 1 ORDER BY 1");

@@ -344,24 +344,18 @@ std::int64_t CampaignStore::retry(std::int64_t campaign, bool include_cancelled)
   return n;
 }
 
-std::int64_t CampaignStore::set_aside_other_engines(std::int64_t campaign) {
-  db::Transaction tx(db_);
-  db_.prepare("UPDATE jobs SET state = 'cancelled' WHERE key IN (SELECT job_key FROM campaign_jobs WHERE campaign_id = ?1) "
-              "AND state = 'pending' AND engine_version != ?2")
-      .bind(1, campaign)
-      .bind(2, BEVERLOO_VERSION)
-      .run();
-  const std::int64_t n = db_.changes();
-  tx.commit();
-  return n;
-}
+std::int64_t CampaignStore::set_aside_other_engines(std::int64_t campaign) { return cancel_pending(campaign, true); }
 
-std::int64_t CampaignStore::cancel(std::int64_t campaign) {
+std::int64_t CampaignStore::cancel(std::int64_t campaign) { return cancel_pending(campaign, false); }
+
+std::int64_t CampaignStore::cancel_pending(std::int64_t campaign, bool other_engines_only) {
   db::Transaction tx(db_);
-  db_.prepare("UPDATE jobs SET state = 'cancelled' WHERE key IN (SELECT job_key FROM campaign_jobs WHERE campaign_id = ?1) "
-              "AND state = 'pending'")
-      .bind(1, campaign)
-      .run();
+  db::Statement st = db_.prepare(std::string("UPDATE jobs SET state = 'cancelled' WHERE key IN (SELECT job_key FROM "
+                                             "campaign_jobs WHERE campaign_id = ?1) AND state = 'pending'") +
+                                 (other_engines_only ? " AND engine_version != ?2" : ""));
+  st.bind(1, campaign);
+  if (other_engines_only) st.bind(2, BEVERLOO_VERSION);
+  st.run();
   const std::int64_t n = db_.changes();
   tx.commit();
   return n;

@@ -90,6 +90,11 @@ class CampaignStore {
   std::int64_t set_aside_other_engines(std::int64_t campaign);
 
  private:
+  std::int64_t cancel_pending(std::int64_t campaign, bool other_engines_only);
+
+ public:
+
+ private:
   db::Database& db_;
 };
 

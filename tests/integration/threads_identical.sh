@@ -8,11 +8,16 @@ cat > "$WORK/job.json" <<'JOB'
 {"dimension": 2, "N": 1200, "W": 30, "w": 5, "E_sp": 100, "zeta": 0.3, "mu": 1.0,
  "run": {"t_max": 25, "target_rel_err": 1e-9, "min_window": 5, "min_transient": 5, "rate_bin": 0.5, "checkpoint_interval": 2}}
 JOB
-"$BIN" simulate "$WORK/job.json" -o "$WORK/t1" --threads 1 --progress quiet > /dev/null
-"$BIN" simulate "$WORK/job.json" -o "$WORK/t2" --threads 2 --progress quiet > /dev/null
-diff <(result_data "$WORK/t1/result.h5") <(result_data "$WORK/t2/result.h5") > "$WORK/diff" \
-  || { head -20 "$WORK/diff"; fail "--threads 2 gives another result than --threads 1"; }
-echo "ok  simulate --threads 1 and 2: bit-identical result"
+# simulate JOB on 1 and 2 threads into DIR1 and DIR2; the results must be the same bits
+same_on_one_and_two_threads() {
+  local job=$1 one=$2 two=$3 what=$4
+  "$BIN" simulate "$job" -o "$one" --threads 1 --progress quiet > /dev/null
+  "$BIN" simulate "$job" -o "$two" --threads 2 --progress quiet > /dev/null
+  diff <(result_data "$one/result.h5") <(result_data "$two/result.h5") > "$WORK/diff" \
+    || { head -20 "$WORK/diff"; fail "$what: --threads 2 gives another result than --threads 1"; }
+  echo "ok  $what simulate --threads 1 and 2: bit-identical result"
+}
+same_on_one_and_two_threads "$WORK/job.json" "$WORK/t1" "$WORK/t2" "SP"
 
 # a DP job (engine 0.5.0: its force field in fixed chunks): the same bits on 1 and 2 threads
 cat > "$WORK/dp.json" <<'JOB'
@@ -22,11 +27,7 @@ cat > "$WORK/dp.json" <<'JOB'
  "E_w": 11.574, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5},
  "run": {"t_max": 3, "target_rel_err": 1e-9, "min_window": 1, "min_transient": 1, "rate_bin": 0.1}}
 JOB
-"$BIN" simulate "$WORK/dp.json" -o "$WORK/dp1" --threads 1 --progress quiet > /dev/null
-"$BIN" simulate "$WORK/dp.json" -o "$WORK/dp2" --threads 2 --progress quiet > /dev/null
-diff <(result_data "$WORK/dp1/result.h5") <(result_data "$WORK/dp2/result.h5") > "$WORK/diff" \
-  || { head -20 "$WORK/diff"; fail "DP: --threads 2 gives another result than --threads 1"; }
-echo "ok  DP simulate --threads 1 and 2: bit-identical result"
+same_on_one_and_two_threads "$WORK/dp.json" "$WORK/dp1" "$WORK/dp2" "DP"
 
 # interrupted with two threads, resumed with one
 "$BIN" simulate "$WORK/job.json" -o "$WORK/mixed" --threads 2 --progress quiet > /dev/null 2>&1 &

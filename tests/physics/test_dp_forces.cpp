@@ -423,18 +423,34 @@ TEST(DpForces, SmoothPolygonFoldedOntoItselfRepelsItsOwnVerticesWithoutFriction)
   check_gradients(fx, 4);
 }
 
+/// Polygon 0 at (0, 3) and a probe: vertex j of polygon 1, pulled to any point while its
+/// polygon stays rigidly far out along a given direction (a spike). The smooth contact's energy.
+struct CornerProbe {
+  SimConfig c = dp_config("dp_smooth", 2);
+  DpFixture fx{c, {{0.0, 3.0}, {0.0, 6.0}}, 0.0, 1};
+  Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff{fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c};
+  const int corner = 3, j = fx.poly.first[1];
+  double contact_energy(const Vec<2>& pos, const Vec<2>& out) {
+    place_regular_polygon(fx.poly, fx.shape, fx.verts, 1, pos + 3.0 * out, 0.0, Vec<2>::Zero());
+    fx.verts.x[j] = pos;
+    ff.list().build(fx.verts, h);
+    VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
+    return ff.terms()[3]->accumulate(fx.verts, f).energy;
+  }
+};
+
 TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
   // Vertex j of polygon 1 (a spike: its polygon is far away, its edges point away) travels
   // inside the contact shell of polygon 0 along edge i-1, around the convex corner i on an
   // arc, and along edge i. The energy of polygon 0's edges against j must stay constant: the
   // shell has constant thickness, the vertex is counted once, nothing jumps at the slab
   // boundaries. The engine's total must equal the brute-force total at every point.
-  SimConfig c = dp_config("dp_smooth", 2);
-  DpFixture fx(c, {{0.0, 3.0}, {0.0, 6.0}}, 0.0, 1);
-  const Hopper<2> h = make_hopper<2>(fx.c);
-  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  CornerProbe probe;
+  const SimConfig& c = probe.c;
+  DpFixture& fx = probe.fx;
   auto& x = fx.verts.x;
-  const int corner = 3, j = fx.poly.first[1];
+  const int corner = probe.corner;
   const Vec<2> r = x[corner];
   const Vec<2> e_in = (r - x[fx.poly.prev[corner]]).normalized(), e_out = (x[fx.poly.next[corner]] - r).normalized();
   const Vec<2> n_in(e_in[1], -e_in[0]), n_out(e_out[1], -e_out[0]);
@@ -455,11 +471,7 @@ TEST(DpForces, SmoothCornerCaseIsContinuousAndCountedOnce) {
       pos = r + gap * Vec<2>(std::cos(a0 + da * k / 40.0), std::sin(a0 + da * k / 40.0));
     // polygon 1 rigidly far out along the local normal, then its vertex j pulled to pos
     const Vec<2> out = k < 0 ? n_in : k > 40 ? n_out : Vec<2>((pos - r).normalized());
-    place_regular_polygon(fx.poly, fx.shape, fx.verts, 1, pos + 3.0 * out, 0.0, Vec<2>::Zero());
-    x[j] = pos;
-    ff.list().build(fx.verts, h);
-    VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
-    const double total = ff.terms()[3]->accumulate(fx.verts, f).energy;
+    const double total = probe.contact_energy(pos, out);
     EXPECT_NEAR(total, brute_force_smooth_energy(fx, c.dp.E_c), 1e-9 * expected) << "step " << k;
     const double on_polygon0 = brute_force_smooth_energy(fx, c.dp.E_c, /*edges_of=*/0);
     EXPECT_NEAR(on_polygon0, expected, 1e-9 * expected) << "step " << k;
@@ -604,12 +616,11 @@ TEST(DpForces, SmoothConcaveCornerIsContinuousAndCountedOnce) {
   // corner j is in both slabs; the corner's energy is taken away once there, so nothing jumps
   // where j enters the second slab or leaves the first (the wedge rule alone dropped or added
   // a slab's energy there: jumps of 18 % and 80 % of the contact's scale, seen 2026-12-04).
-  SimConfig c = dp_config("dp_smooth", 2);
-  DpFixture fx(c, {{0.0, 3.0}, {0.0, 6.0}}, 0.0, 1);
-  const Hopper<2> h = make_hopper<2>(fx.c);
-  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  CornerProbe probe;
+  const SimConfig& c = probe.c;
+  DpFixture& fx = probe.fx;
   auto& x = fx.verts.x;
-  const int corner = 3, j = fx.poly.first[1];
+  const int corner = probe.corner;
   x[corner] += 0.6 * fx.shape.l0[0] * (Vec<2>(0.0, 3.0) - x[corner]).normalized();
   const Vec<2> r = x[corner];
   const Vec<2> e_in = (r - x[fx.poly.prev[corner]]).normalized(), e_out = (x[fx.poly.next[corner]] - r).normalized();
@@ -620,11 +631,7 @@ TEST(DpForces, SmoothConcaveCornerIsContinuousAndCountedOnce) {
   std::vector<double> on_polygon0;
   for (int k = -30; k <= 10; ++k) {
     const Vec<2> pos = r + gap * n_in + (0.005 * k * fx.shape.l0[0]) * e_in;
-    place_regular_polygon(fx.poly, fx.shape, fx.verts, 1, pos + 3.0 * n_in, 0.0, Vec<2>::Zero());
-    x[j] = pos;
-    ff.list().build(fx.verts, h);
-    VecArray<2> f(fx.verts.size(), Vec<2>::Zero());
-    const double total = ff.terms()[3]->accumulate(fx.verts, f).energy;
+    const double total = probe.contact_energy(pos, n_in);
     EXPECT_NEAR(total, brute_force_smooth_energy(fx, c.dp.E_c), 1e-9 * scale) << "step " << k;
     on_polygon0.push_back(brute_force_smooth_energy(fx, c.dp.E_c, /*edges_of=*/0));
     if (k == -5) {  // in both slabs: the forces are the energy's gradient there too

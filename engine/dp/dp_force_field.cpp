@@ -112,36 +112,42 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
   return r;
 }
 
+namespace {
+// One term over vertices [begin, end): its force into f, its energy (or power) summed. Plain
+// functions of a const state and a separate force array, as the terms' own accumulate(): with
+// the state and its forces behind one non-const reference (a lambda capturing them) GCC
+// reloaded per vertex what these keep in registers (the vertex terms took twice the time).
+template <class Term>
+double add_range(const Term& term, const ParticleState<2>& s, VecArray<2>& f, int begin, int end) {
+  double sum = 0;
+  for (int i = begin; i < end; ++i) sum += term.add_to(s, i, f[i]);
+  return sum;
+}
+}  // namespace
+
 void DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r) {
   // Each vertex takes the walls' force, then the corners' (edges near the orifice, few: in
-  // order, one thread), then gravity and drag: the order of the terms one after another.
+  // order, one thread), then gravity, then drag: the order of the terms one after another.
   const int n = s.size(), chunks = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
-  if (static_cast<int>(chunk_sums_.size()) < 2 * chunks) chunk_sums_.resize(2 * chunks);  // only when N grows
+  if (static_cast<int>(chunk_sums_.size()) < 3 * chunks) chunk_sums_.resize(3 * chunks);  // only when N grows
   double* sums = chunk_sums_.data();
-  auto range = [n](int c) { return std::pair<int, int>{c * kVerticesPerChunk, std::min(n, (c + 1) * kVerticesPerChunk)}; };
-  for_chunks(chunks, [&](int c) {
-    const auto [begin, end] = range(c);
-    double energy = 0;
-    for (int i = begin; i < end; ++i) energy += walls_.add_to(s, i, s.f[i]);
-    sums[c] = energy;
+  const ParticleState<2>& state = s;
+  VecArray<2>& f = s.f;
+  const bool gravity = gravity_.g() != 0, drag = drag_.active();
+  for_chunks(chunks, [&, sums](int c) {
+    const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
+    sums[c] = add_range(walls_, state, f, begin, end);
   });
   for (int c = 0; c < chunks; ++c) r.U_wall += sums[c];
   r.U_wall += corners_.accumulate_edges(s, s.f, corner_edges_).energy;
-  const double g = gravity_.g();
-  const bool drag = drag_.active();
-  for_chunks(chunks, [&](int c) {
-    const auto [begin, end] = range(c);
-    double energy = 0, power = 0;
-    for (int i = begin; i < end; ++i) {
-      if (g != 0) energy += gravity_.add_to(s, i, s.f[i]);
-      if (drag) power += drag_.add_to(s, i, s.f[i]);
-    }
-    sums[2 * c] = energy;
-    sums[2 * c + 1] = power;
+  for_chunks(chunks, [&, sums](int c) {
+    const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
+    sums[chunks + c] = gravity ? add_range(gravity_, state, f, begin, end) : 0.0;
+    sums[2 * chunks + c] = drag ? add_range(drag_, state, f, begin, end) : 0.0;
   });
   for (int c = 0; c < chunks; ++c) {
-    r.U_gravity += sums[2 * c];
-    r.P_drag += sums[2 * c + 1];
+    r.U_gravity += sums[chunks + c];
+    r.P_drag += sums[2 * chunks + c];
   }
 }
 
@@ -156,21 +162,22 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
   if (static_cast<int>(shape_chunks_.size()) < chunks) shape_chunks_.resize(chunks);  // only when N grows
   for_chunks(chunks, [&](int c) {
     ShapeChunk& ch = shape_chunks_[c];
-    ch.U_area = ch.U_length = ch.U_bending = ch.longest = 0;
-    ch.outgrown = false;
     ch.corner_edges.clear();
     ch.fold_vertices.clear();
     PolygonEdges& edges = ch.edges;
+    // the sums in locals (kept in registers: the chunk's members could alias the force stores)
+    double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
+    bool outgrown = false;
     for (int m = c * kPolygonsPerChunk, end = std::min(np, (c + 1) * kPolygonsPerChunk); m < end; ++m) {
       edges.measure(poly_, s.x, m);
-      area_.add_polygon(s, s.f, m, ch.U_area);
-      segments_.add_polygon(s, s.f, edges, ch.U_length, ch.longest);
-      bending_.add_polygon(s, s.f, edges, ch.U_bending);
+      area_.add_polygon(s, s.f, m, U_area);
+      segments_.add_polygon(s, s.f, edges, U_length, longest);
+      bending_.add_polygon(s, s.f, edges, U_bending);
       const int n = edges.count;
       double perimeter = 0;
       for (int k = 0; k < n; ++k) {
         const int i = edges.first + k;
-        ch.outgrown = ch.outgrown || edges.sq[k] > edge_bound_[i] * edge_bound_[i];
+        outgrown = outgrown || edges.sq[k] > edge_bound_[i] * edge_bound_[i];
         perimeter += edges.len[k];
       }
       // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
@@ -184,6 +191,11 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
       for (int k = 0; k < n; ++k)
         if (corners_.may_touch(s, edges.first + k, edges.sq[k])) ch.corner_edges.push_back(edges.first + k);
     }
+    ch.U_area = U_area;
+    ch.U_length = U_length;
+    ch.U_bending = U_bending;
+    ch.longest = longest;
+    ch.outgrown = outgrown;
   });
   double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
   bool outgrown = false;

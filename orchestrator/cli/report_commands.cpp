@@ -1,4 +1,5 @@
 // `beverloo fit DIR` and `beverloo report DIR [-o OUT]`.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include "core/failures.h"
 #include "orchestrator/campaign/campaign_dir.h"
 #include "reports/campaign_fits.h"
+#include "reports/next_width.h"
 #include "reports/report.h"
 #include "core/text_escape.h"
 
@@ -34,6 +36,40 @@ int report_campaign(const std::string& dir, const std::string& out) {
   });
 }
 
+namespace {
+/// `fit --next`: per fitted series, the next width by reports/next_width.h.
+void print_next_widths(const CampaignFits& fits, const DesignTargets& targets, const std::vector<double>& range,
+                       double step) {
+  std::printf("\nNext run per series (A-optimal for k and beta per CPU, candidates every %g; reports/next_width.h)\n\n", step);
+  std::printf("| series | k now | beta now | next w | k_err after | beta_err after | relative cost |\n|---|---|---|---|---|---|---|\n");
+  for (const Series& s : fits.series) {
+    const std::string label = markdown_cell(s.label);
+    if (!s.fit || s.rate_is_c0()) {
+      std::printf("| %s | no fit | | | | | |\n", label.c_str());
+      continue;
+    }
+    std::vector<double> w, Q, err;
+    for (const SeriesPoint& p : s.points)
+      if (p.flowing()) {
+        w.push_back(p.w);
+        Q.push_back(p.Q);
+        err.push_back(p.Q_err);
+      }
+    const double lo = range.size() == 2 ? range[0] : w.front() - 2, hi = range.size() == 2 ? range[1] : w.back();
+    try {
+      const DesignAdvice a = next_width(*s.fit, w, Q, err, lo, hi, step, targets);
+      std::printf("| %s | %.3g +- %.2g | %.3g +- %.2g | ", label.c_str(), s.fit->k, a.k_err_now, s.fit->beta, a.beta_err_now);
+      if (a.targets_met)
+        std::printf("targets met | | | |\n");
+      else
+        std::printf("%.4g | %.2g | %.2g | %.2f |\n", a.next->w, a.next->k_err_after, a.next->beta_err_after, a.next->relative_cost);
+    } catch (const FitError& e) {
+      std::printf("| %s | %s | | | | | |\n", label.c_str(), markdown_cell(e.what()).c_str());
+    }
+  }
+}
+}  // namespace
+
 void add_report_commands(CLI::App& app, int& exit_status) {
   auto dir = std::make_shared<std::string>();
   CLI::App* fit = app.add_subcommand("fit", "Fit Q = C (w - k)^beta per series and beta(lambda) per group");
@@ -42,7 +78,18 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   fit->add_flag("--authors-way", *authors_way,
                 "also print every exponent fitted as the paper's authors fitted theirs (bounded, unweighted, 2 < w < 19) "
                 "and the crossover with free plateaus, beside the default fits (docs/paper.md)");
-  fit->callback([dir, authors_way, &exit_status] {
+  auto next = std::make_shared<bool>(false);
+  fit->add_flag("--next", *next,
+                "also print, per series, the width whose next run would shrink the errors of k and beta most per "
+                "CPU (A-optimal design; docs/cli.md)");
+  auto k_err = std::make_shared<double>(NAN), beta_err = std::make_shared<double>(NAN), w_step = std::make_shared<double>(0.25);
+  auto w_range = std::make_shared<std::vector<double>>();
+  fit->add_option("--k-err", *k_err, "--next: the standard error of k wanted (a target)")->check(CLI::PositiveNumber);
+  fit->add_option("--beta-err", *beta_err, "--next: the standard error of beta wanted (a target)")->check(CLI::PositiveNumber);
+  fit->add_option("--w-range", *w_range, "--next: the widths allowed, LO HI (default: 2 below the series' smallest to its largest)")
+      ->expected(2);
+  fit->add_option("--w-step", *w_step, "--next: the grid of candidate widths (default 0.25)")->check(CLI::PositiveNumber);
+  fit->callback([dir, authors_way, next, k_err, beta_err, w_range, w_step, &exit_status] {
     exit_status = guarded("fit", [&] {
       CampaignWriter writer(*dir, CampaignWriter::Open::MustExist);
       db::Database& db = writer.db();
@@ -69,6 +116,12 @@ void add_report_commands(CLI::App& app, int& exit_status) {
         std::ifstream bmd(fs::path(out) / "beverloo_fits_both_ways.md"), fmd(fs::path(out) / "crossover_fits_both_ways.md");
         std::cout << "\nBoth ways: beverloo's free fit (the default) beside the authors' bounded one\n\n" << bmd.rdbuf()
                   << "\n" << fmd.rdbuf();
+      }
+      if (*next) {
+        DesignTargets targets;
+        if (std::isfinite(*k_err)) targets.k_err = *k_err;
+        if (std::isfinite(*beta_err)) targets.beta_err = *beta_err;
+        print_next_widths(fits, targets, *w_range, *w_step);
       }
       for (const Series& s : fits.series)
         if (s.left_out > 0)

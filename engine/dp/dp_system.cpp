@@ -120,11 +120,18 @@ void DpSystem::body_friction(VecArray<2>& out) {
 }
 
 namespace {
-/// Within a thick funnel wall (within T/2 of its core), not beyond it.
-bool inside_a_wall(const FunnelCores& cores, const Vec<2>& x) {
+/// Within a thick funnel wall (within T/2 of its core), or beyond a side wall by at most T/2:
+/// in a wall, not through it.
+bool inside_a_wall(const FunnelCores& cores, const Hopper<2>& hopper, const Vec<2>& x) {
   const double h = cores.half_thickness();
   for (int k = 0; k < 2; ++k)
     if ((x - cores.nearest_point(k, x)).squaredNorm() <= h * h) return true;
+  for (int k = 2; k < 4; ++k) {
+    if (!hopper.has_wall(k)) continue;
+    const Vec<2> a = hopper.wall_start(k);
+    const double beyond = k == 2 ? a[0] - x[0] : x[0] - a[0];
+    if (x[1] > a[1] && beyond >= 0 && beyond <= h) return true;
+  }
   return false;
 }
 }  // namespace
@@ -148,7 +155,7 @@ void DpSystem::check_vertices(double t) const {
     const FunnelCores& cores = ff_->funnel_cores();
     const bool thick = cores.half_thickness() > 0;
     const int wall = thick ? cores.crossed(x, next) : hopper_.funnel_wall_crossed(x, next);
-    const bool outside = !hopper_.contains(x) && !(thick && inside_a_wall(cores, x));
+    const bool outside = !hopper_.contains(x) && !(thick && inside_a_wall(cores, hopper_, x));
     if (outside || wall >= 0) {
       std::ostringstream msg;
       msg << "polygon " << poly_.owner[i] << " went through a wall at t = " << t << ": ";

@@ -13,6 +13,8 @@
 /// inside the wall: the wall keeps pushing a vertex that has entered it back out, up to an
 /// energy (E_w/2)(1 + T/sigma_w)^2 at the core, where a line wall (T = 0) gives way at E_w/2.
 /// A vertex through the core has gone through the wall (an edge crossing a core is a leak).
+/// The side walls of such a container are half-spaces (HopperWalls::add_side): a vertex beyond
+/// one by more than T/2, the funnel cores' depth, has gone through it.
 #include <cmath>
 
 #include "hopper.h"

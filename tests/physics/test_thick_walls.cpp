@@ -118,6 +118,27 @@ TEST(ThickWalls, EnergyIsContinuousAlongAPathOverTheLipAndUnderTheFloor) {
   EXPECT_GT(*std::min_element(energy.begin(), energy.end()), 0.5 * 0.5 * t.c.E_w * 0.16);
 }
 
+TEST(ThickWalls, SideWallsOfAThickContainerPushAVertexBackInFromBeyondThem) {
+  ThickFloor t(1.0);
+  const double xs = t.h.x_max(), y = 5.0, sigma = t.fx.shape.wall[t.fx.verts.species[t.j]];
+  double previous = 0;
+  for (double x : {xs - 0.4 * sigma, xs - 1e-9, xs + 1e-9, xs + 0.2 * t.l0(), xs + 0.45 * t.l0()}) {
+    Vec<2> f;
+    const double e = t.wall_energy(Vec<2>(x, y), &f);
+    EXPECT_NEAR(e, 0.5 * t.c.E_w * std::pow(1 + 2 * (x - xs) / sigma, 2), 1e-6 * t.c.E_w) << "x - x_max = " << x - xs;
+    EXPECT_GT(e, previous);
+    EXPECT_LT(f[0], 0) << "pushed back in at x - x_max = " << x - xs;
+    previous = e;
+    const double eps = 1e-7;  // the force is the energy's gradient there
+    EXPECT_NEAR(f[0], -(t.wall_energy(Vec<2>(x + eps, y)) - t.wall_energy(Vec<2>(x - eps, y))) / (2 * eps),
+                1e-5 * std::max(1.0, std::fabs(f[0])));
+  }
+  ThickFloor line(0.0);  // a line side wall pushes a vertex beyond it further out
+  Vec<2> f;
+  line.wall_energy(Vec<2>(xs + 0.2 * line.l0(), y), &f);
+  EXPECT_GT(f[0], 0);
+}
+
 TEST(ThickWalls, AWallIsGoneThroughOnlyPastItsCore) {
   const Hopper<2> h(20, 4, M_PI / 2, M_PI / 2);
   const FunnelCores cores(h, 0.2);

@@ -118,7 +118,7 @@ std::vector<ParamSpec> build_table() {
        .sql_column = "wall_width",
        .sql_default = "CASE WHEN model = 'dp_smooth' THEN contact_width WHEN model = 'dp_rough' THEN 1 END"},
       {.path = "dp.wall_thickness", .type = T::Real, .unit = "l0 (small)", .default_text = "0",
-       .doc = "thickness of the funnel walls, their orifice ends rounded (0: walls are lines; the authors' code: a floor 1 l0 thick, its lip a bead 1 l0 wide)",
+       .doc = "thickness of the funnel walls, their orifice ends rounded, the side walls then half-spaces (0: walls are lines; the authors' code: a floor 1 l0 thick, its lip a bead 1 l0 wide)",
        .access = REAL(dp.wall_thickness), .lo = 0, .hi = 4, .models = M::Dp, .omit_at_default = true,
        .sql_column = "wall_thickness", .sql_default = "CASE WHEN model LIKE 'dp_%' THEN 0 END"},
       // --- numerics ----------------------------------------------------------------------

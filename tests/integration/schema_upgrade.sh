@@ -7,17 +7,20 @@ source "$(dirname "$0")/lib.sh"
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 D=$WORK/old
 mkdir -p "$D/jobs"
+# the jobs carry this binary's engine version: retry puts back only a job this engine may run
+# (integration/engine_upgrade.sh covers jobs of another engine)
+V=$("$BIN" --version | grep -oE '[0-9]+\.[0-9]+\.[0-9]+' | head -1)
 {
   cat "$ROOT"/schema/0001_*.sql "$ROOT"/schema/0002_*.sql "$ROOT"/schema/0003_*.sql
-  cat <<'SQL'
+  sed "s/@ENGINE@/$V/g" <<'SQL'
 PRAGMA application_id = 1112951887;
 PRAGMA user_version = 3;
 INSERT INTO campaigns (id, name, sweep_json, sweep_sha256) VALUES (1, 'old', '{}', 'x');
 INSERT INTO jobs (key, dir, job_json, engine_version, model, dimension, N, size_ratio, W_container, w, theta_w_left_deg,
                   theta_w_right_deg, E_sp, E_w, zeta, mu, lambda, dissipation_scale, gravity, replica, seed, t_max,
                   target_rel_err, state)
-  VALUES ('k1', 'jobs/k1', '{}', 'v', 'sp', 2, 100, 1.4, 10, 4, 90, 90, 100, 1e4, 0.1, 1, 0.1, 0.316, 1, 0, 7, 100, 0.05, 'done'),
-         ('k2', 'jobs/k2', '{}', 'v', 'sp', 2, 100, 1.4, 10, 5, 90, 90, 100, 1e4, 0.1, 1, 0.1, 0.316, 1, 0, 8, 100, 0.05, 'failed');
+  VALUES ('k1', 'jobs/k1', '{}', '@ENGINE@', 'sp', 2, 100, 1.4, 10, 4, 90, 90, 100, 1e4, 0.1, 1, 0.1, 0.316, 1, 0, 7, 100, 0.05, 'done'),
+         ('k2', 'jobs/k2', '{}', '@ENGINE@', 'sp', 2, 100, 1.4, 10, 5, 90, 90, 100, 1e4, 0.1, 1, 0.1, 0.316, 1, 0, 8, 100, 0.05, 'failed');
 INSERT INTO campaign_jobs VALUES (1, 'k1', 0, '{}'), (1, 'k2', 1, '{}');
 INSERT INTO attempts (id, job_key, attempt_no, token, executor, host, pid, state, heartbeat_at, ended_at, exit_status,
                       failure_class, message)

@@ -69,6 +69,15 @@ struct Series {
   };
   std::vector<ClogPoint> clog_points;
   int clogged_points() const;
+  /// The flowing points' w, Q and Q_err (what the Beverloo fit takes), in w order.
+  void flowing_columns(std::vector<double>& w, std::vector<double>& Q, std::vector<double>& Q_err) const {
+    for (const SeriesPoint& p : points)
+      if (p.flowing()) {
+        w.push_back(p.w);
+        Q.push_back(p.Q);
+        Q_err.push_back(p.Q_err);
+      }
+  }
 };
 
 /// A fit whose beta has a larger relative error than this is "not determined" (index.html).

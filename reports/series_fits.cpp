@@ -86,12 +86,7 @@ void clog_statistics(Series& s, const std::vector<RunRecord>& runs) {
 void fit_series(Series& s, const std::vector<RunRecord>& runs) {
   pool_points(s, runs);
   std::vector<double> w, Q, e;
-  for (const auto& p : s.points)
-    if (p.flowing()) {
-      w.push_back(p.w);
-      Q.push_back(p.Q);
-      e.push_back(p.Q_err);
-    }
+  s.flowing_columns(w, Q, e);
   try {
     s.fit = fit_beverloo(w, Q, e);
   } catch (const FitError& err) {

@@ -49,12 +49,7 @@ void print_next_widths(const CampaignFits& fits, const DesignTargets& targets, c
       continue;
     }
     std::vector<double> w, Q, err;
-    for (const SeriesPoint& p : s.points)
-      if (p.flowing()) {
-        w.push_back(p.w);
-        Q.push_back(p.Q);
-        err.push_back(p.Q_err);
-      }
+    s.flowing_columns(w, Q, err);
     const double lo = range.size() == 2 ? range[0] : w.front() - 2, hi = range.size() == 2 ? range[1] : w.back();
     try {
       const DesignAdvice a = next_width(*s.fit, w, Q, err, lo, hi, step, targets);

@@ -148,12 +148,12 @@ void DpSystem::check_vertices(double t) const {
   // A polygon may wrap around an orifice corner (walls are lines), with vertices under the
   // floor; it has gone through a wall only if one of its edges cuts one. Vertices beyond the
   // side walls are outside the container.
+  // thick walls (dp.wall_thickness): a vertex may be inside a wall; it is through only past the core
+  const FunnelCores& cores = ff_->funnel_cores();
+  const bool thick = cores.half_thickness() > 0;
   for (int i = 0; i < verts_.size(); ++i) {
     const Vec<2>& x = verts_.x[i];
     const Vec<2>& next = verts_.x[poly_.next[i]];
-    // thick walls (dp.wall_thickness): a vertex may be inside a wall; it is through only past the core
-    const FunnelCores& cores = ff_->funnel_cores();
-    const bool thick = cores.half_thickness() > 0;
     const int wall = thick ? cores.crossed(x, next) : hopper_.funnel_wall_crossed(x, next);
     const bool outside = !hopper_.contains(x) && !(thick && inside_a_wall(cores, hopper_, x));
     if (outside || wall >= 0) {

@@ -43,7 +43,9 @@ class HopperWalls final : public ForceTerm<D> {
     for (int w = 0; mask; ++w, mask >>= 1) {
       if (!(mask & 1u)) continue;
       if constexpr (D == 2) {
-        if (cores_) {
+        // thick walls: the funnel cores; beside a side wall (above its start) a half-space;
+        // below a side wall's start its end point, as a line wall (the code below)
+        if (cores_ && (w < 2 || s.x[i][1] > hopper_.wall_start(w)[1])) {
           energy += w < 2 ? add_thick(s.x[i], w, half, inv_half, fi) : add_side(s.x[i], w, half, inv_half, fi);
           continue;
         }
@@ -72,21 +74,11 @@ class HopperWalls final : public ForceTerm<D> {
     return energy;
   }
 
-  /// Side wall k (2 or 3) of walls with a thickness: beside it (above its start) a half-space,
-  /// d the signed distance (negative beyond it: the force keeps growing); below its start, as a
-  /// line wall, its end point. The container's outside is wall; nothing of a flow belongs there.
+  /// Side wall k (2 or 3) of walls with a thickness, beside it (above its start): a half-space,
+  /// d the signed distance (negative beyond it: the force keeps growing). The container's
+  /// outside is wall; nothing of a flow belongs there.
   double add_side(const Vec<D>& x, int k, double half, double inv_half, Vec<D>& fi) const {
     const Vec<D> a = hopper_.wall_start(k);
-    if (x[1] <= a[1]) {  // below the ray: its start point, unsigned
-      const Vec<D> away = x - a;
-      const double d2 = away.squaredNorm();
-      if (d2 >= half * half || d2 == 0) return 0;
-      const double d = std::sqrt(d2);
-      double dU_dd;
-      const double energy = HarmonicOverlap::energy(eps_, d, inv_half, dU_dd);
-      fi += (-dU_dd / d) * away;
-      return energy;
-    }
     const double inward = k == 2 ? 1.0 : -1.0;  // the left side wall's inside is +x
     const double d = (x[0] - a[0]) * inward;
     if (d >= half) return 0;

@@ -44,16 +44,11 @@ class FunnelCores {
   double offset_from_wall() const { return half_ * std::sqrt(2.0); }
   /// The core (0 or 1) that the segment p -> q properly crosses, or -1.
   int crossed(const Vec<2>& p, const Vec<2>& q) const {
-    auto side = [](const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
-      const Vec<2> ab = b - a, ac = c - a;
-      return ab[0] * ac[1] - ab[1] * ac[0];
-    };
     for (int k = 0; k < 2; ++k) {
       if (len_[k] <= 0) continue;
       // a ray (vertical funnel wall): its piece up to the higher of p and q
       const double length = std::isinf(len_[k]) ? std::max(0.0, std::max(p[1], q[1]) - a_[k][1]) : len_[k];
-      const Vec<2> a = a_[k], b = a_[k] + length * u_[k];
-      if (side(a, b, p) * side(a, b, q) < 0 && side(p, q, a) * side(p, q, b) < 0) return k;
+      if (segments_cross(a_[k], a_[k] + length * u_[k], p, q)) return k;
     }
     return -1;
   }

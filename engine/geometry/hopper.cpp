@@ -64,17 +64,13 @@ bool Hopper<2>::contains(const Vec<2>& p) const {
 
 int Hopper<2>::funnel_wall_crossed(const Vec<2>& p, const Vec<2>& q) const {
   if (std::min(p[1], q[1]) > funnel_top() || std::max(p[1], q[1]) < 0) return -1;  // the funnels lie in 0 <= y <= top
-  auto side = [](const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {
-    const Vec<2> ab = b - a, ac = c - a;
-    return ab[0] * ac[1] - ab[1] * ac[0];
-  };
   for (int k = 0; k < 2; ++k) {
     // a vertical funnel wall is a ray: its piece up to the funnel's top (above it the
     // containment test, as for every side wall, catches a polygon outside)
     const double length = std::isinf(seg_[k].length) ? funnel_top() : seg_[k].length;
     if (length <= 0) continue;
     const Vec<2> a = seg_[k].a, b = seg_[k].a + length * seg_[k].u;
-    if (side(a, b, p) * side(a, b, q) < 0 && side(p, q, a) * side(p, q, b) < 0) return k;
+    if (segments_cross(a, b, p, q)) return k;
   }
   return -1;
 }

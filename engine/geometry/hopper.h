@@ -29,6 +29,16 @@ namespace beverloo {
 template <int D>
 class Hopper;
 
+/// True if segments a-b and p-q properly cross (each one's ends strictly on both sides of the
+/// other's line): a polygon edge cutting a wall.
+inline bool segments_cross(const Vec<2>& a, const Vec<2>& b, const Vec<2>& p, const Vec<2>& q) {
+  auto side = [](const Vec<2>& u, const Vec<2>& v, const Vec<2>& c) {
+    const Vec<2> uv = v - u, uc = c - u;
+    return uv[0] * uc[1] - uv[1] * uc[0];
+  };
+  return side(a, b, p) * side(a, b, q) < 0 && side(p, q, a) * side(p, q, b) < 0;
+}
+
 template <>
 class Hopper<2> {
  public:

@@ -79,16 +79,6 @@ void DpForceField::set_threads(int threads) {
   if (smooth_) smooth_->set_threads(threads_);
 }
 
-template <class Body>
-void DpForceField::for_chunks(int count, Body&& body) const {
-  if (threads_ == 1) {  // no parallel region: even a team of one costs per call in libgomp
-    for (int c = 0; c < count; ++c) body(c);
-    return;
-  }
-#pragma omp parallel for schedule(static) num_threads(threads_)
-  for (int c = 0; c < count; ++c) body(c);
-}
-
 ForceReport DpForceField::compute(ParticleState<2>& s) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;

@@ -19,6 +19,7 @@
 #include "../forces/force_field.h"
 #include "../forces/gravity.h"
 #include "../forces/hopper_walls.h"
+#include "../forces/parallel_chunks.h"
 #include "../forces/sp_contact.h"
 #include "../geometry/funnel_cores.h"
 #include "polygons.h"
@@ -98,10 +99,9 @@ class DpForceField {
   Gravity<2> gravity_;
   Drag<2> drag_;
   DpWallCorners corners_;
-  /// Runs body(chunk) for chunks 0 .. count-1: on threads_ threads, or in a plain loop (no
-  /// parallel region at one thread).
+  /// body(chunk) for chunks 0 .. count-1 on threads_ threads (parallel_chunks.h).
   template <class Body>
-  void for_chunks(int count, Body&& body) const;
+  void for_chunks(int count, Body&& body) const { for_each_chunk(threads_, count, body); }
   /// Walls, orifice corners, gravity and drag, vertex chunk by vertex chunk.
   void add_vertex_terms(ParticleState<2>& s, ForceReport& r);
 

@@ -5,6 +5,7 @@
 
 #include "harmonic_overlap.h"
 #include "kinetic_friction.h"
+#include "parallel_chunks.h"
 
 namespace beverloo {
 
@@ -190,12 +191,11 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, cons
     for (int c = 0; c < chunks; ++c) rows(c, sink);
   } else {
     if (static_cast<int>(logs_.size()) < chunks) logs_.resize(chunks);  // only when N grows
-#pragma omp parallel for schedule(static) num_threads(threads_)
-    for (int c = 0; c < chunks; ++c) {
+    for_each_chunk(threads_, chunks, [&](int c) {
       logs_[c].clear();  // keeps its capacity: no allocation once the logs have grown
       LogSink sink{&logs_[c]};
       rows(c, sink);
-    }
+    });
     Vec<2>* F = f.data();
     for (int c = 0; c < chunks; ++c)
       for (const ForceWrite& w : logs_[c]) F[w.vertex] += w.force;

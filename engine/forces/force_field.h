@@ -13,6 +13,7 @@
 #include "drag.h"
 #include "gravity.h"
 #include "hopper_walls.h"
+#include "parallel_chunks.h"
 #include "sp_contact.h"
 
 namespace beverloo {
@@ -192,16 +193,10 @@ class ForceField {
   std::vector<ForceTerm<D>*> terms() { return {&contact_, &walls_, &gravity_, &drag_}; }
 
  private:
-  /// block(b) for every block b < nb: on threads_ threads, or with one thread in a plain loop
-  /// (no parallel region: even a team of one went through libgomp, see drift_and_start_forces).
+  /// block(b) for every block b < nb on threads_ threads (parallel_chunks.h).
   template <class Block>
   void for_each_block(int nb, Block& block) const {
-    if (threads_ == 1) {
-      for (int b = 0; b < nb; ++b) block(b);
-      return;
-    }
-#pragma omp parallel for schedule(static) num_threads(threads_)
-    for (int b = 0; b < nb; ++b) block(b);
+    for_each_chunk(threads_, nb, block);
   }
   /// The drag coefficient of each species, 0 while dissipation is off.
   std::array<double, 2> drag_coefficients_now() const {

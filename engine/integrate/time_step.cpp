@@ -31,6 +31,13 @@ TimeStepChoice choose_time_step(const std::optional<double>& explicit_dt, const 
   t.tau_min = s.tau_min();
   t.tau_term = s.tau_term();
   t.largest_accepted = std::min(t.period_min / kRefusePeriodFraction, t.tau_min);
+  {
+    const double by_period = t.period_min / kAutoPeriodFraction, by_damping = t.tau_min / kAutoDampingFraction;
+    if (kDefaultMaxDt <= by_period && kDefaultMaxDt <= by_damping)
+      t.limiting_term = "the largest dt, 1e-3";
+    else
+      t.limiting_term = by_period <= by_damping ? t.period_term : t.tau_term;
+  }
   if (!explicit_dt) {
     t.automatic = true;
     t.dt = std::min({kDefaultMaxDt, t.period_min / kAutoPeriodFraction, t.tau_min / kAutoDampingFraction});

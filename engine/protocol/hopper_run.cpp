@@ -403,7 +403,7 @@ RunResult HopperRun<D>::finish(const std::string& status, const std::string& rea
   r.exit_size = rec_.exit_size;
   r.exit_particle = rec_.exit_particle;
   r.dt = ts_.dt;
-  r.dt_limiting_term = ts_.period_term;
+  r.dt_limiting_term = ts_.limiting_term;
   r.seed = c_.effective_seed();
   r.steps = s_.step;
   r.t_end = time();

@@ -149,7 +149,7 @@ CaseResult run_case(const BenchCase& bc, int runs, int threads) {
   CaseResult out{bc.id, bc.description, bc.config.is_dp() ? "vertex-steps/s" : "particle-steps/s", median, rates.front(),
                  rates.back(), warm.time_step().dt, builds_per_kstep, bc.config.skin, runs, bc.steps, warm.moving_points(),
                  threads, "", 0.0};
-  out.dt_limit = warm.time_step().dt < kDefaultMaxDt ? warm.time_step().period_term : "the largest dt, 1e-3";
+  out.dt_limit = warm.time_step().limiting_term;
   // steps per second x dt = t0 per second, over the threads: per CPU
   out.t0_per_cpu_minute = 60 * median / double(out.points) * out.dt / (out.threads > 0 ? out.threads : 1);
   std::fprintf(human, "%-2s %-58s skin %.2f builds/1000 steps %.1f  median %.3g  min %.3g  max %.3g %s  (%d runs x %lld steps, dt %.3g, %d thread%s)\n",

@@ -119,6 +119,21 @@ TEST(Config, AutoTimeStepFollowsTheStiffestTerm) {
   EXPECT_NEAR(t.period_min, 8.65e-3, 0.1e-3);
   EXPECT_NEAR(t.dt, t.period_min / 15, 1e-12);
   EXPECT_NE(t.period_term.find("E_sp"), std::string::npos);
+  EXPECT_EQ(t.limiting_term, t.period_term);
+}
+
+TEST(Config, TheLimitingTermIsTheBoundThatSetsDt) {
+  // soft disks: the 1e-3 cap; strong friction: its damping time, not the contact's period
+  json j = minimal();
+  j["E_sp"] = 100;
+  j["mu"] = 0;
+  EXPECT_EQ(choose_time_step(SimConfig::from_json(j)).limiting_term, "the largest dt, 1e-3");
+  j["mu"] = 200;
+  const TimeStepChoice t = choose_time_step(SimConfig::from_json(j));
+  ASSERT_LT(t.tau_min / 5, t.period_min / 15);
+  EXPECT_NEAR(t.dt, t.tau_min / 5, 1e-15);
+  EXPECT_EQ(t.limiting_term, t.tau_term);
+  EXPECT_NE(t.limiting_term.find("mu"), std::string::npos) << t.limiting_term;
 }
 
 TEST(Config, CanonicalJsonRoundTripsAndSeedDependsOnPhysicsOnly) {

@@ -103,6 +103,38 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
 }
 
 namespace {
+// The polygon's shape forces (its area, segment and bending results in `edges`) written to its
+// vertices, each vertex's sum in the order of the terms one after another: area, then the
+// segments of its edges in edge order, then bending likewise. For vertex k > 0 that is edge
+// k - 1 (it is its end), then edge k (its start); for vertex 0, edge 0, then edge n - 1. The
+// vertices' forces are zero before (compute() zeroes them and the polygon is its own).
+void write_shape_forces(const PolygonEdges& edges, bool bending, VecArray<2>& f) {
+  const int n = edges.count;
+  const double* ax = edges.area_fx;
+  const double* ay = edges.area_fy;
+  const double* sx = edges.seg_fx;
+  const double* sy = edges.seg_fy;
+  const double* bx = edges.bend_dx;
+  const double* by = edges.bend_dy;
+  double* __restrict out = f[edges.first].data();  // x0, y0, x1, y1, ...: Vec<2> is two doubles
+  static_assert(sizeof(Vec<2>) == 2 * sizeof(double));
+  if (bending) {
+    out[0] = (((0.0 + ax[0]) - sx[0]) + sx[n - 1]) + bx[0] - bx[n - 1];
+    out[1] = (((0.0 + ay[0]) - sy[0]) + sy[n - 1]) + by[0] - by[n - 1];
+    for (int k = 1; k < n; ++k) {
+      out[2 * k] = ((((0.0 + ax[k]) + sx[k - 1]) - sx[k]) - bx[k - 1]) + bx[k];
+      out[2 * k + 1] = ((((0.0 + ay[k]) + sy[k - 1]) - sy[k]) - by[k - 1]) + by[k];
+    }
+  } else {
+    out[0] = ((0.0 + ax[0]) - sx[0]) + sx[n - 1];
+    out[1] = ((0.0 + ay[0]) - sy[0]) + sy[n - 1];
+    for (int k = 1; k < n; ++k) {
+      out[2 * k] = ((0.0 + ax[k]) + sx[k - 1]) - sx[k];
+      out[2 * k + 1] = ((0.0 + ay[k]) + sy[k - 1]) - sy[k];
+    }
+  }
+}
+
 // One term over vertices [begin, end): its force into f, its energy (or power) summed. Plain
 // functions of a const state and a separate force array, as the terms' own accumulate(): with
 // the state and its forces behind one non-const reference (a lambda capturing them) GCC
@@ -159,21 +191,25 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
     double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
     bool outgrown = false;
     for (int m = c * kPolygonsPerChunk, end = std::min(np, (c + 1) * kPolygonsPerChunk); m < end; ++m) {
-      edges.measure(poly_, s.x, m);
-      area_.add_polygon(s, s.f, m, U_area);
-      segments_.add_polygon(s, s.f, edges, U_length, longest);
-      bending_.add_polygon(s, s.f, edges, U_bending);
+      edges.measure(poly_, s, m);
+      U_area += area_.vertex_forces(edges);
+      segments_.edge_forces(edges);
+      if (bending_.active()) bending_.edge_gradients(edges);
+      write_shape_forces(edges, bending_.active(), s.f);
+      for (int k = 0; k < edges.count; ++k) U_length += edges.seg_u[k];
+      for (int k = 0; bending_.active() && k < edges.count; ++k) U_bending += edges.bend_u[k];
       const int n = edges.count;
       double perimeter = 0;
       for (int k = 0; k < n; ++k) {
         const int i = edges.first + k;
         outgrown = outgrown || edges.sq[k] > edge_bound_[i] * edge_bound_[i];
         perimeter += edges.len[k];
+        longest = edges.len[k] > longest ? edges.len[k] : longest;
       }
       // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
       for (int k = 0; smooth_ && k < n; ++k) {
         const int i = edges.first + k, in = poly_.prev[i] - edges.first;
-        if (smooth_->fold_may_act(edges.e[in].dot(edges.e[k]), edges.sq[in], edges.sq[k], s.species[i]))
+        if (smooth_->fold_may_act(edges.dot(in, k), edges.sq[in], edges.sq[k], edges.species))
           ch.fold_vertices.push_back(i);  // grows to its largest once, then no allocation
       }
       // most polygons are far from the orifice: one test for the polygon, then one per edge

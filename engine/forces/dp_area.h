@@ -5,6 +5,7 @@
 #include <array>
 
 #include "../dp/polygons.h"
+#include "dp_polygon_edges.h"
 #include "force_term.h"
 
 namespace beverloo {
@@ -16,22 +17,38 @@ class DpArea final : public ForceTerm<2> {
   std::string_view name() const override { return "dp_area"; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0;
-    for (int m = 0; m < p_.polygons(); ++m) add_polygon(s, f, m, energy);
+    for (int m = 0; m < p_.polygons(); ++m) {
+      edges_.measure(p_, s, m);
+      add_polygon(f, edges_, energy);
+    }
     return {energy, 0};
   }
-  /// Polygon m's part: its forces into f, its energy onto `energy` (DpForceField's fused pass
-  /// calls this polygon by polygon, between the other shape terms: each vertex's force sums
-  /// the same contributions in the same order as the terms one after another).
-  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, int m, double& energy) const {
-    const int species = s.species[p_.first[m]];
-    const double da = polygon_area(p_, s.x, m) - shape_.a0[species];
-    energy += 0.5 * k_[species] * da * da;
-    const double c = -0.5 * k_[species] * da;  // force = -dU/dr
-    for (int i = p_.first[m]; i < p_.first[m + 1]; ++i) {
-      const Vec<2>& xn = s.x[p_.next[i]];
-      const Vec<2>& xp = s.x[p_.prev[i]];
-      f[i][0] += c * (xn[1] - xp[1]);
-      f[i][1] += c * (xp[0] - xn[0]);
+  /// The measured polygon's area force on each vertex into edges.area_fx/fy; returns its energy.
+  /// The area is polygon_area()'s sum, in its order.
+  double vertex_forces(PolygonEdges& edges) const {
+    const int n = edges.count;
+    const double* x = edges.x;
+    const double* y = edges.y;
+    double twice_area = 0;
+    for (int k = 0; k < n; ++k) twice_area += x[k] * y[k + 1] - x[k + 1] * y[k];
+    const double da = 0.5 * twice_area - shape_.a0[edges.species];
+    const double c = -0.5 * k_[edges.species] * da;  // force = -dU/dr
+    double* __restrict fx = edges.area_fx;
+    double* __restrict fy = edges.area_fy;
+    for (int k = 0; k < n; ++k) {
+      fx[k] = c * (y[k + 1] - y[k - 1]);
+      fy[k] = c * (x[k - 1] - x[k + 1]);
+    }
+    return 0.5 * k_[edges.species] * da * da;
+  }
+  /// The measured polygon's part: its forces added to f, its energy onto `energy`. Per polygon
+  /// so that DpForceField's fused pass can take the terms polygon by polygon: each vertex's
+  /// force sums the same contributions in the same order as the terms one after another.
+  void add_polygon(VecArray<2>& f, PolygonEdges& edges, double& energy) const {
+    energy += vertex_forces(edges);
+    for (int k = 0; k < edges.count; ++k) {
+      f[edges.first + k][0] += edges.area_fx[k];
+      f[edges.first + k][1] += edges.area_fy[k];
     }
   }
 
@@ -39,6 +56,7 @@ class DpArea final : public ForceTerm<2> {
   const PolygonSet& p_;
   const DpShape& shape_;
   double k_[2];
+  PolygonEdges edges_;  ///< accumulate()'s own scratch
 };
 
 }  // namespace beverloo

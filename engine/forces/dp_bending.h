@@ -22,34 +22,63 @@ class DpBending final : public ForceTerm<2> {
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0;
     for (int m = 0; k_ != 0 && m < p_.polygons(); ++m) {
-      edges_.measure(p_, s.x, m);
-      add_polygon(s, f, edges_, energy);
+      edges_.measure(p_, s, m);
+      add_polygon(f, edges_, energy);
     }
     return {energy, 0};
   }
-  /// The measured polygon's part: its forces into f, its energy onto `energy`. See
-  /// DpArea::add_polygon for why per polygon. Uses edges' scratch (unit, inv_len): const, so
-  /// threads with their own PolygonEdges may call it for different polygons at once.
-  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, PolygonEdges& edges, double& energy) const {
-    if (k_ == 0) return;
-    const int first = edges.first, n = edges.count;
-    VecArray<2>& unit_ = edges.unit;
-    std::vector<double>& inv_len_ = edges.inv_len;
-    for (int k = 0; k < n; ++k) {
-      inv_len_[k] = 1.0 / edges.len[k];
-      unit_[k] = edges.e[k] * inv_len_[k];
+  bool active() const { return k_ != 0; }
+  /// Per edge k of the measured polygon: dU/de_k into edges.bend_dx/dy (also at k = -1, the
+  /// last edge), edge k's energy with its next edge into edges.bend_u; on the way the unit
+  /// vectors and inverse lengths (edges.ux, uy, inv_len). Only when active().
+  void edge_gradients(PolygonEdges& edges) const {
+    const int n = edges.count;
+    const double c = c_of_[edges.species], two_c = 2 * c;
+    const double* ex = edges.ex;
+    const double* ey = edges.ey;
+    const double* len = edges.len;
+    double* __restrict inv = edges.inv_len;
+    double* __restrict ux = edges.ux;
+    double* __restrict uy = edges.uy;
+    #pragma omp simd  // element-wise: the same operations per edge as the scalar loop
+    for (int e = 0; e < n; ++e) {
+      inv[e] = 1.0 / len[e];
+      ux[e] = ex[e] * inv[e];
+      uy[e] = ey[e] * inv[e];
     }
-    for (int k = 0; k < n; ++k) {
-      const int i = first + k;
-      const double c = c_of_[s.species[i]];
-      const Vec<2>& u = unit_[k];
-      const Vec<2>& u_next = unit_[p_.next[i] - first];
-      const Vec<2>& u_prev = unit_[p_.prev[i] - first];
-      energy += c * (u - u_next).squaredNorm();
-      const Vec<2> g = (2 * c) * (2 * u - u_next - u_prev);
-      const Vec<2> dU_de = (g - g.dot(u) * u) * inv_len_[k];
-      f[p_.next[i]] -= dU_de;
-      f[i] += dU_de;
+    ux[-1] = ux[n - 1];
+    uy[-1] = uy[n - 1];
+    ux[n] = ux[0];
+    uy[n] = uy[0];
+    double* __restrict dx = edges.bend_dx;
+    double* __restrict dy = edges.bend_dy;
+    double* __restrict u = edges.bend_u;
+    #pragma omp simd  // element-wise: the same operations per edge as the scalar loop
+    for (int e = 0; e < n; ++e) {
+      const double tx = ux[e] - ux[e + 1], ty = uy[e] - uy[e + 1];
+      u[e] = c * (tx * tx + ty * ty);
+      const double gx = two_c * (2 * ux[e] - ux[e + 1] - ux[e - 1]);
+      const double gy = two_c * (2 * uy[e] - uy[e + 1] - uy[e - 1]);
+      const double g_along = gx * ux[e] + gy * uy[e];
+      dx[e] = (gx - g_along * ux[e]) * inv[e];
+      dy[e] = (gy - g_along * uy[e]) * inv[e];
+    }
+    dx[-1] = dx[n - 1];
+    dy[-1] = dy[n - 1];
+  }
+  /// The measured polygon's part: its forces added to f (edge by edge, end vertex then start),
+  /// its energy onto `energy`. See DpArea::add_polygon for why per polygon.
+  void add_polygon(VecArray<2>& f, PolygonEdges& edges, double& energy) const {
+    if (k_ == 0) return;
+    edge_gradients(edges);
+    const int first = edges.first, n = edges.count;
+    for (int e = 0; e < n; ++e) {
+      const int i = first + e, j = p_.next[i];
+      energy += edges.bend_u[e];
+      f[j][0] -= edges.bend_dx[e];
+      f[j][1] -= edges.bend_dy[e];
+      f[i][0] += edges.bend_dx[e];
+      f[i][1] += edges.bend_dy[e];
     }
   }
 
@@ -57,7 +86,7 @@ class DpBending final : public ForceTerm<2> {
   const PolygonSet& p_;
   double k_;
   double c_of_[2];
-  PolygonEdges edges_;           ///< accumulate()'s own scratch
+  PolygonEdges edges_;  ///< accumulate()'s own scratch
 };
 
 }  // namespace beverloo

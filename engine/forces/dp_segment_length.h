@@ -4,7 +4,6 @@
 /// l_i = r_next(i) - r_i: a harmonic spring of stiffness K_l n_v along each edge.
 /// Also records the longest edge, which bounds the smooth contact's Verlet-list reach.
 #include <array>
-#include <cmath>
 
 #include "../dp/polygons.h"
 #include "dp_polygon_edges.h"
@@ -21,28 +20,48 @@ class DpSegmentLength final : public ForceTerm<2> {
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0, longest = 0;
     for (int m = 0; m < p_.polygons(); ++m) {
-      edges_.measure(p_, s.x, m);
-      add_polygon(s, f, edges_, energy, longest);
+      edges_.measure(p_, s, m);
+      add_polygon(f, edges_, energy, longest);
     }
     longest_ = longest;
     return {energy, 0};
   }
-  /// The measured polygon's part: its forces into f, its energy onto `energy`, its longest edge
-  /// into `longest` (a running maximum). See DpArea::add_polygon for why per polygon.
-  void add_polygon(const ParticleState<2>& s, VecArray<2>& f, const PolygonEdges& edges, double& energy,
-                   double& longest) const {
+  /// Per edge k of the measured polygon: the force on its end vertex into edges.seg_fx/fy (its
+  /// start takes minus it), its energy into edges.seg_u; seg_fx/fy also at k = -1 (the last edge).
+  void edge_forces(PolygonEdges& edges) const {
+    const int n = edges.count;
+    const double k = k_[edges.species], l0 = shape_.l0[edges.species];
+    const double* ex = edges.ex;
+    const double* ey = edges.ey;
+    const double* len = edges.len;
+    double* __restrict fx = edges.seg_fx;
+    double* __restrict fy = edges.seg_fy;
+    double* __restrict u = edges.seg_u;
+    #pragma omp simd  // element-wise: the same operations per edge as the scalar loop
+    for (int e = 0; e < n; ++e) {
+      const double stretch = len[e] - l0;
+      u[e] = 0.5 * k * stretch * stretch;
+      const double along = -k * stretch / len[e];  // toward l0
+      fx[e] = along * ex[e];
+      fy[e] = along * ey[e];
+    }
+    fx[-1] = fx[n - 1];
+    fy[-1] = fy[n - 1];
+  }
+  /// The measured polygon's part: its forces added to f (edge by edge, end vertex then start),
+  /// its energy onto `energy`, its longest edge into `longest` (a running maximum). See
+  /// DpArea::add_polygon for why per polygon.
+  void add_polygon(VecArray<2>& f, PolygonEdges& edges, double& energy, double& longest) const {
+    edge_forces(edges);
     const int first = edges.first, n = edges.count;
-    for (int k = 0; k < n; ++k) {
-      const int i = first + k, j = p_.next[i];
-      const Vec<2>& e = edges.e[k];
-      const double len = edges.len[k];
-      const int species = s.species[i];
-      const double stretch = len - shape_.l0[species];
-      energy += 0.5 * k_[species] * stretch * stretch;
-      const Vec<2> fj = (-k_[species] * stretch / len) * e;  // on the end vertex, toward l0
-      f[j] += fj;
-      f[i] -= fj;
-      longest = len > longest ? len : longest;
+    for (int e = 0; e < n; ++e) {
+      const int i = first + e, j = p_.next[i];
+      energy += edges.seg_u[e];
+      f[j][0] += edges.seg_fx[e];
+      f[j][1] += edges.seg_fy[e];
+      f[i][0] -= edges.seg_fx[e];
+      f[i][1] -= edges.seg_fy[e];
+      longest = edges.len[e] > longest ? edges.len[e] : longest;
     }
   }
   double longest_edge() const { return longest_; }

@@ -79,6 +79,8 @@ class DpForceField {
   /// once; on the way, whether an edge outgrew its bound and which edges may touch an orifice
   /// corner (corner_edges_). Returns their energy, each term's sum in its own order.
   double shape_pass(ParticleState<2>& s);
+  /// shape_pass()'s work on polygon chunk c: its forces, and its results into shape_chunks_[c].
+  void shape_chunk(ParticleState<2>& s, int c);
   /// Every edge's bound set again from its length, and the list invalidated (an edge outgrew its bound).
   void reset_edge_bounds(const ParticleState<2>& s);
 

@@ -68,6 +68,12 @@ CampaignFits fit_campaign(db::Database& db) {
   return out;
 }
 
+std::vector<Series> fit_campaign_series(db::Database& db, std::int64_t campaign) {
+  CampaignRuns runs = read_campaign_runs(db, campaign);
+  for (Series& s : runs.series) fit_series(s, runs.runs[s.key]);
+  return std::move(runs.series);
+}
+
 /// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).
 std::string bound_names(const BoundedBeverlooFit& f) {
   std::string out;

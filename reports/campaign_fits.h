@@ -106,6 +106,9 @@ struct CampaignFits {
 /// Reads the latest campaign of the database and its experiment series, and fits them. Never
 /// throws for unfittable data.
 CampaignFits fit_campaign(db::Database& db);
+/// The series of one campaign with their Beverloo fits only (no crossovers, no experiments):
+/// what the adaptive planner decides from.
+std::vector<Series> fit_campaign_series(db::Database& db, std::int64_t campaign);
 /// The imported experiment series (reports/experiment_series.cpp), appended and fitted.
 void add_experiment_series(db::Database& db, CampaignFits& out);
 

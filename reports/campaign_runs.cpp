@@ -14,12 +14,22 @@ using nlohmann::json;
 std::string fmt(double v, int digits = 4) { return table_number(v, digits); }
 }  // namespace
 
-CampaignRuns read_campaign_runs(db::Database& db) {
+std::string series_key_of(const nlohmann::json& job) {
+  json series_job = job;
+  for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
+  return sha256_hex(series_job.dump());
+}
+
+CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign) {
   CampaignRuns out;
   db::Statement st = db.prepare(
       "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
       "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
-      "WHERE c.campaign_id = (SELECT max(id) FROM campaigns) ORDER BY c.point_index");
+      "WHERE c.campaign_id = coalesce(?1, (SELECT max(id) FROM campaigns)) ORDER BY c.point_index");
+  if (campaign >= 0)
+    st.bind(1, campaign);
+  else
+    st.bind_null(1);
   std::map<std::string, std::size_t> index;
   std::vector<json> series_jobs;  // per series, for labels that tell them apart
   while (st.step()) {
@@ -27,7 +37,7 @@ CampaignRuns read_campaign_runs(db::Database& db) {
     const double w = job["w"].get<double>();
     json series_job = job;
     for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
-    const std::string key = sha256_hex(series_job.dump());
+    const std::string key = series_key_of(job);
     if (!index.count(key)) {
       Series s;
       s.key = key;

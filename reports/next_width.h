@@ -1,7 +1,7 @@
 #pragma once
 /// \file next_width.h
 /// \brief Where the next run of a Beverloo series helps the fit most per CPU (issue 30 item 1:
-/// the design criterion; the automatic loop that adds such jobs is not built yet).
+/// the design criterion; reports/adaptive_planner.h adds such jobs while a campaign runs).
 ///
 /// The criterion: A-optimality on the parameters users quote, k and beta (not C), per unit of
 /// cost. With the fit's Fisher information F = sum_i g_i g_i^T / sigma_i^2 (g = dQ/d(C, k, beta)

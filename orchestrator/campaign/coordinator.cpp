@@ -47,7 +47,7 @@ FailureClass classify(const WorkerExit& e) { return failure_from_exit(e.signaled
 class Coordinator {
  public:
   Coordinator(db::Database& db, std::int64_t campaign, const CampaignOptions& o, Executor& ex)
-      : store_(db), campaign_(campaign), o_(o), ex_(ex), host_(host_name()) {}
+      : db_(db), store_(db), campaign_(campaign), o_(o), ex_(ex), host_(host_name()) {}
 
   int run(const std::atomic<bool>* stop) {
     // every attempt left in flight by an earlier coordinator is accounted for before anything new starts
@@ -58,6 +58,7 @@ class Coordinator {
                    "[beverloo] %lld pending job(s) of another engine version cancelled: this is engine %s, whose own "
                    "jobs for the same points the sweep holds (campaign status lists the versions)\n",
                    (long long)n, BEVERLOO_VERSION);
+    plan();  // decisions due from results stored before (a resumed adaptive campaign)
     const auto start = Clock::now();
     auto last_timeout_check = start;
     initial_ = store_.counts(campaign_);
@@ -85,6 +86,7 @@ class Coordinator {
       }
       const std::vector<WorkerExit> exits = ex_.poll();
       for (const WorkerExit& e : exits) finished(e);
+      if (!exits.empty()) plan();
       if (Clock::now() - last_timeout_check > std::chrono::milliseconds(500)) {
         check_timeouts();
         last_timeout_check = Clock::now();
@@ -100,6 +102,23 @@ class Coordinator {
   }
 
  private:
+  /// Asks the planner (if any) and stores its decisions with their jobs in one transaction. A
+  /// planner that fails stops planning for this run, loudly; the jobs already there still run.
+  void plan() {
+    if (!o_.planner || planner_failed_) return;
+    try {
+      const std::vector<PlanDecision> decisions = o_.planner->plan(db_, campaign_);
+      store_.record_decisions(campaign_, decisions);
+      for (const PlanDecision& d : decisions)
+        std::fprintf(stderr, "[beverloo] adaptive %s %s: %s\n", d.series_key.substr(0, 12).c_str(),
+                     d.job ? ("add " + d.job->key.substr(0, 12)).c_str() : "stop", terminal_safe(d.reason).c_str());
+    } catch (const std::exception& e) {
+      planner_failed_ = true;
+      std::fprintf(stderr, "[beverloo] adaptive planner failed, no more jobs will be added in this run: %s\n",
+                   terminal_safe(e.what()).c_str());
+    }
+  }
+
   std::string job_dir(const std::string& dir) const { return (fs::path(o_.dir) / dir).string(); }
 
   void write_spec(const ClaimedJob& job) {
@@ -264,6 +283,7 @@ class Coordinator {
     ClaimedJob job;
     Clock::time_point started;
   };
+  db::Database& db_;
   CampaignStore store_;
   std::int64_t campaign_;
   CampaignOptions o_;
@@ -272,6 +292,7 @@ class Coordinator {
   std::map<std::int64_t, Live> live_;  // started or adopted, not yet settled
   std::set<std::int64_t> timed_out_;  // attempts stopped for exceeding --job-timeout
   std::map<std::string, int> infra_failures_;
+  bool planner_failed_ = false;
   StateCounts initial_;
   Clock::time_point last_progress_{};
 };

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "campaign_dir.h"
+#include "planner.h"
 #include "engine/protocol/hopper_run.h"
 #include "orchestrator/slurm/slurm_options.h"
 
@@ -24,6 +25,8 @@ struct CampaignOptions {
   ProgressMode progress = ProgressMode::Auto;
   std::string executor = "local";  ///< local | slurm
   SlurmOptions slurm;              ///< the slurm executor's settings
+  /// Grows the campaign as results arrive (an adaptive sweep); nullptr: a fixed grid.
+  CampaignPlanner* planner = nullptr;
 };
 
 /// `beverloo run`: creates or reopens the campaign of sweep_path (if given) and runs every job

@@ -53,6 +53,16 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
         .run();
     id = db_.last_insert_rowid();
   }
+  std::vector<const JobSpec*> all;
+  all.reserve(jobs.size());
+  for (const JobSpec& j : jobs) all.push_back(&j);
+  insert_and_link(id, all, 0);
+  tx.commit();
+  return id;
+}
+
+void CampaignStore::insert_and_link(std::int64_t campaign, const std::vector<const JobSpec*>& jobs,
+                                    std::int64_t point_index) {
   db::Statement insert_job = db_.prepare(
       "INSERT OR IGNORE INTO jobs (key, dir, job_json, engine_version, model, dimension, N, size_ratio, W_container, w, "
       "theta_w_left_deg, theta_w_right_deg, E_sp, E_w, zeta, mu, lambda, dissipation_scale, gravity, replica, seed, "
@@ -60,8 +70,9 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
       "?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28)");
   db::Statement link = db_.prepare(
       "INSERT OR IGNORE INTO campaign_jobs (campaign_id, job_key, point_index, sweep_point) VALUES (?1, ?2, ?3, ?4)");
-  std::int64_t index = 0;
-  for (const JobSpec& j : jobs) {
+  std::int64_t index = point_index;
+  for (const JobSpec* jp : jobs) {
+    const JobSpec& j = *jp;
     const SimConfig& c = j.config;
     const std::optional<double> lambda = derived::lambda(c);  // NULL when there is no dissipation
     std::optional<double> scale;
@@ -94,10 +105,42 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
     else
       insert_job.bind_null(24).bind_null(25).bind_null(26).bind_null(27).bind_null(28);
     insert_job.run();
-    link.bind(1, id).bind(2, j.key).bind(3, index++).bind(4, j.point.dump()).run();
+    link.bind(1, campaign).bind(2, j.key).bind(3, index++).bind(4, j.point.dump()).run();
+  }
+}
+
+void CampaignStore::record_decisions(std::int64_t campaign, const std::vector<PlanDecision>& decisions) {
+  if (decisions.empty()) return;
+  db::Transaction tx(db_);
+  std::int64_t next_index = 0;
+  {
+    db::Statement st = db_.prepare("SELECT coalesce(max(point_index), -1) + 1 FROM campaign_jobs WHERE campaign_id = ?1");
+    st.bind(1, campaign);
+    st.step();
+    next_index = st.get_int(0);
+  }
+  db::Statement seq = db_.prepare(
+      "SELECT coalesce(max(seq), 0) + 1 FROM adaptive_decisions WHERE campaign_id = ?1 AND series_key = ?2");
+  db::Statement row = db_.prepare(
+      "INSERT INTO adaptive_decisions (campaign_id, series_key, seq, action, job_key, w, replica, reason, k_err, "
+      "beta_err, k_err_after, beta_err_after, flowing_points) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, "
+      "?12, ?13)");
+  for (const PlanDecision& d : decisions) {
+    if (d.job) insert_and_link(campaign, {&*d.job}, next_index++);
+    seq.bind(1, campaign).bind(2, d.series_key);
+    seq.step();
+    const std::int64_t n = seq.get_int(0);
+    seq.reset();
+    row.bind(1, campaign).bind(2, d.series_key).bind(3, n).bind(4, d.action);
+    if (d.job)
+      row.bind(5, d.job->key).bind(6, d.job->config.w).bind(7, d.job->config.replica);
+    else
+      row.bind_null(5).bind_null(6).bind_null(7);
+    row.bind(8, d.reason).bind(9, d.k_err).bind(10, d.beta_err).bind(11, d.k_err_after).bind(12, d.beta_err_after)
+        .bind(13, d.flowing_points)
+        .run();
   }
   tx.commit();
-  return id;
 }
 
 std::int64_t CampaignStore::latest_campaign() {

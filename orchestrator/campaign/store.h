@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/failures.h"
+#include "orchestrator/campaign/planner.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/sweep/sweep.h"
 
@@ -49,6 +50,9 @@ class CampaignStore {
   /// Creates the campaign (or finds the same name + sweep) and inserts its jobs, all in one
   /// transaction; jobs that exist already (from any campaign) are shared, not duplicated.
   std::int64_t create_campaign(const Sweep& sweep, const std::string& sweep_text, const std::vector<JobSpec>& jobs);
+  /// Stores planner decisions in one transaction: each added job inserted (or, if it exists,
+  /// shared) and linked to the campaign after its other jobs, and every decision's row.
+  void record_decisions(std::int64_t campaign, const std::vector<PlanDecision>& decisions);
   /// The newest campaign, or -1.
   std::int64_t latest_campaign();
 
@@ -91,6 +95,8 @@ class CampaignStore {
 
  private:
   std::int64_t cancel_pending(std::int64_t campaign, bool other_engines_only);
+  /// Inserts jobs (shared if they exist) and links them to the campaign from point_index on.
+  void insert_and_link(std::int64_t campaign, const std::vector<const JobSpec*>& jobs, std::int64_t point_index);
 
  public:
 

@@ -21,6 +21,7 @@
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/campaign/job_explain.h"
 #include "orchestrator/campaign/job_speed.h"
+#include "reports/adaptive_planner.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
 #include "core/text_escape.h"
@@ -82,6 +83,25 @@ int expand_command(const std::string& path, const std::string& format) {
   return exit_code::kOk;
 }
 
+/// An adaptive campaign's decisions (reports/adaptive_planner.h): per series, the jobs added and
+/// the last decision with its reason.
+void print_adaptive_decisions(db::Database& db, std::int64_t campaign) {
+  db::Statement has = db.prepare("SELECT count(*) FROM sqlite_master WHERE name = 'adaptive_decisions'");
+  if (!has.step() || has.get_int(0) == 0) return;  // a database of an older schema (read as it is)
+  db::Statement st = db.prepare(
+      "SELECT series_key, sum(action = 'add'), (SELECT d2.action || ': ' || d2.reason FROM adaptive_decisions d2 "
+      "WHERE d2.campaign_id = d.campaign_id AND d2.series_key = d.series_key ORDER BY d2.seq DESC LIMIT 1) "
+      "FROM adaptive_decisions d WHERE campaign_id = ?1 GROUP BY series_key ORDER BY min(rowid)");
+  st.bind(1, campaign);
+  bool first = true;
+  while (st.step()) {
+    std::printf("%s series %s: %lld added; last: %s\n", first ? "adaptive    " : "            ",
+                terminal_safe(st.get_text(0).substr(0, 12)).c_str(), (long long)st.get_int(1),
+                terminal_safe(st.get_text(2)).c_str());
+    first = false;
+  }
+}
+
 int status_command(const std::string& dir) {
   CampaignReader reader(dir);
   db::Database& db = reader.db();
@@ -119,6 +139,7 @@ int status_command(const std::string& dir) {
     for (const std::string& v : versions) std::printf(" %s;", v.c_str());
     std::printf(" a job runs only on its own engine\n");
   }
+  print_adaptive_decisions(db, id);
   db::Statement endings = db.prepare(
       "SELECT r.status, count(*) FROM results r JOIN campaign_jobs cj ON cj.job_key = r.job_key "
       "WHERE cj.campaign_id = ?1 GROUP BY 1 ORDER BY 1");
@@ -318,6 +339,8 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
       CampaignOptions o = *opts;
       if (o.dir.empty() || o.dir == "campaign") o.dir = (fs::path("campaigns") / fs::path(*sweep_path).stem()).string();
       o.progress = to_mode(*progress);
+      AdaptivePlanner planner;  // grows a campaign whose sweep has an "adaptive" block; else adds nothing
+      o.planner = &planner;
       const int rc = run_campaign(*sweep_path, o);
       if (rc != exit_code::kOk && rc != exit_code::kJobsFailed) return rc;
       const int report = report_campaign(o.dir, campaign_dir::report_path(o.dir));
@@ -374,6 +397,8 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
     exit_status = guarded("campaign run", [&] {
       CampaignOptions o = *opts;
       o.progress = to_mode(*progress);
+      AdaptivePlanner planner;
+      o.planner = &planner;
       return run_campaign(std::nullopt, o);
     });
   });

@@ -1,6 +1,8 @@
 #include <algorithm>
 #include "sweep.h"
 
+#include "adaptive_spec.h"
+
 #include "engine/models/model_time_step.h"
 #include "core/digest.h"
 #include "engine/json_file.h"
@@ -295,10 +297,10 @@ Sweep Sweep::load(const std::string& path, std::string* text) {
 Sweep Sweep::parse(const json& j, const std::string& default_name) {
   if (!j.is_object()) throw SweepError("(top level)", "a sweep file is a JSON object");
   static const std::set<std::string> keys = {"name", "comment", "base", "run", "sweep", "derived", "where", "replicas",
-                                             "$schema"};
+                                             "adaptive", "$schema"};
   for (auto it = j.begin(); it != j.end(); ++it)
     if (!keys.count(it.key()))
-      throw SweepError(it.key(), "unknown field (known: name, comment, base, run, sweep, derived, where, replicas)");
+      throw SweepError(it.key(), "unknown field (known: name, comment, base, run, sweep, derived, where, replicas, adaptive)");
   Sweep s;
   s.source = j;
   s.name = default_name;
@@ -329,6 +331,7 @@ Sweep Sweep::parse(const json& j, const std::string& default_name) {
                                  j["replicas"].get<long>() > 100000))
     throw SweepError("replicas", show(j["replicas"]) + ": must be an integer in [1, 100000]");
   if (j.contains("sweep")) (void)expand_node(j["sweep"], "sweep");  // structure errors now
+  if (j.contains("adaptive")) (void)AdaptiveSpec::parse(j["adaptive"]);
   return s;
 }
 

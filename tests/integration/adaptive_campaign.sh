@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Adaptive campaigns (issue 30): a small SP series grows by the planner's decisions until its
+# budget is spent; the same sweep run again from scratch with the coordinator and workers
+# killed (SIGKILL) at random moments takes the same decisions and adds the same jobs, each job
+# once, with bit-identical results; a finished campaign run again adds nothing; the decisions
+# are in the database and in `campaign status`; a bad adaptive block is refused, naming its field.
+source "$(dirname "$0")/lib.sh"
+cat > "$WORK/sweep.json" <<'J'
+{"name": "adaptive",
+ "base": {"N": 150, "W": 10, "E_sp": 100, "lambda": "inf"},
+ "run": {"t_max": 300, "target_rel_err": 1e-6, "min_window": 10, "checkpoint_interval": 2},
+ "sweep": {"w": [3, 4, 5, 6]},
+ "adaptive": {"target": {"k_err": 0.001}, "w_range": [2.5, 8], "w_step": 0.5, "max_added_jobs": 3}}
+J
+decisions() {
+  sqlite3 "$1/campaign.sqlite" "SELECT series_key, seq, action, coalesce(job_key, '-'), coalesce(w, '-'), coalesce(replica, '-'),
+                                reason FROM adaptive_decisions ORDER BY series_key, seq"
+}
+results() {
+  sqlite3 "$1/campaign.sqlite" "SELECT job_key, status, printf('%!.17g|%!.17g', Q, Q_err), steps FROM results ORDER BY job_key"
+}
+"$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> "$WORK/clean.log"
+clean=$(decisions "$WORK/clean")
+echo "$clean" | cut -c1-12,65- | sed 's/^/  /'
+[ "$(echo "$clean" | grep -c '|add|')" -eq 3 ] || fail "expected 3 added jobs (the budget), got: $clean"
+echo "$clean" | tail -n 1 | grep -q '|stop|.*budget spent' || fail "the series should stop on its budget: $clean"
+[ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM results")" -eq 7 ] || fail "expected 7 results (4 + 3)"
+grep -q "adaptive .* add" "$WORK/clean.log" || fail "the coordinator did not log its decisions"
+echo "ok  the series grew by 3 jobs and stopped on its budget"
+
+# run again: nothing is added, nothing runs
+"$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> /dev/null
+[ "$(decisions "$WORK/clean")" = "$clean" ] || fail "a finished campaign run again took new decisions"
+echo "ok  a finished adaptive campaign run again decides nothing"
+
+"$BIN" campaign status --dir "$WORK/clean" > "$WORK/status"
+grep -q "adaptive" "$WORK/status" && grep -q "budget spent" "$WORK/status" || { cat "$WORK/status"; fail "campaign status does not show the decisions"; }
+echo "ok  campaign status shows the decisions"
+
+# chaos: kill at random moments, re-run until done; the same decisions and results
+RANDOM=${CHAOS_SEED:-7}
+rounds=0 kills=0
+while :; do
+  rounds=$((rounds + 1))
+  [ "$rounds" -le 60 ] || fail "no completion after 60 rounds"
+  "$BIN" run "$WORK/sweep.json" --dir "$WORK/chaos" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
+  coord=$!
+  delay=$((RANDOM % 1500 + 300))
+  sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
+  if [ $((RANDOM % 2)) -eq 0 ]; then
+    pid=$(pgrep -f "worker $WORK/chaos" | head -n 1 || true)
+    [ -n "$pid" ] && kill -9 "$pid" 2>/dev/null || true
+  fi
+  if kill -9 "$coord" 2>/dev/null; then kills=$((kills + 1)); fi
+  set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
+  [ "$rc" -eq 0 ] && break
+done
+echo "chaos: $rounds rounds, $kills coordinator kills"
+[ "$kills" -ge 2 ] || fail "too few kills to mean anything"
+[ "$(decisions "$WORK/chaos")" = "$clean" ] || { diff <(echo "$clean") <(decisions "$WORK/chaos"); fail "decisions differ after kills"; }
+[ "$(results "$WORK/chaos")" = "$(results "$WORK/clean")" ] || fail "results differ after kills"
+[ "$(sqlite3 "$WORK/chaos/campaign.sqlite" "SELECT count(*) - count(DISTINCT job_key) FROM results")" -eq 0 ] || fail "duplicate results"
+echo "ok  killed $kills times: the same decisions, jobs and bits as the clean campaign"
+
+# bad adaptive blocks: exit 2, the field named, nothing created
+bad() {  # $1: adaptive block, $2: the field the message must name
+  sed "s#\"adaptive\": .*}}\$#\"adaptive\": $1}#" "$WORK/sweep.json" > "$WORK/bad.json"
+  set +e; "$BIN" run "$WORK/bad.json" --dir "$WORK/bad" --progress quiet 2> "$WORK/err"; rc=$?; set -e
+  [ "$rc" -eq 2 ] || fail "adaptive $1: exit $rc, expected 2"
+  grep -q "$2" "$WORK/err" || fail "adaptive $1: message does not name $2: $(cat "$WORK/err")"
+  [ ! -e "$WORK/bad/campaign.sqlite" ] || fail "adaptive $1: a campaign was created"
+}
+bad '{"w_range": [2, 8]}' 'adaptive.target'
+bad '{"target": {"k_err": -1}, "w_range": [2, 8]}' 'adaptive.target.k_err'
+bad '{"target": {"k_err": 0.1}, "w_range": [8, 2]}' 'adaptive.w_range'
+bad '{"target": {"k_err": 0.1}, "w_range": [2, 8], "w_step": 1e-9}' 'adaptive.w_step'
+bad '{"target": {"k_err": 0.1}, "w_range": [2, 8], "max_added_jobs": 2.5}' 'adaptive.max_added_jobs'
+bad '{"target": {"k_er": 0.1}, "w_range": [2, 8]}' 'adaptive.target.k_er'
+bad '"yes"' 'adaptive'
+echo "ok  bad adaptive blocks refused with their field named"

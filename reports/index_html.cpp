@@ -170,6 +170,32 @@ void clog_table(std::ostringstream& html, const CampaignFits& fits) {
   html << "</table>\n<p><a href=\"clog_statistics.csv\">CSV</a></p>\n";
 }
 
+/// An adaptive campaign's decisions (reports/adaptive_planner.h), in the order they were taken.
+void adaptive_table(std::ostringstream& html, db::Database& db, const CampaignFits& fits) {
+  db::Statement has = db.prepare("SELECT count(*) FROM sqlite_master WHERE name = 'adaptive_decisions'");
+  if (!has.step() || has.get_int(0) == 0) return;
+  db::Statement st = db.prepare(
+      "SELECT series_key, seq, action, w, replica, reason FROM adaptive_decisions "
+      "WHERE campaign_id = (SELECT max(id) FROM campaigns) ORDER BY rowid");
+  bool any = false;
+  while (st.step()) {
+    if (!any)
+      html << "<h2>Adaptive decisions</h2>\n<p>The planner's decisions (docs/sweeps.md, 'adaptive'): per series, one job "
+              "at a time at the width that reduces the variance of k and beta most per CPU, until the targets are met, "
+              "the budget is spent or no fit is possible.</p>\n"
+           << "<table><tr><th>series</th><th>#</th><th>decision</th><th>w</th><th>replica</th><th>why</th></tr>\n";
+    any = true;
+    std::string label = st.get_text(0).substr(0, 12);
+    for (const Series& s : fits.series)
+      if (s.key == st.get_text(0)) label = s.label;
+    html << "<tr><td>" << html_escape(label) << "</td><td>" << st.get_int(1) << "</td><td>" << html_escape(st.get_text(2))
+         << "</td><td>" << (st.is_null(3) ? std::string() : table_number(st.get_double(3), 4)) << "</td><td>"
+         << (st.is_null(4) ? std::string() : std::to_string(st.get_int(4))) << "</td><td style=\"text-align:left\">"
+         << html_escape(st.get_text(5)) << "</td></tr>\n";
+  }
+  if (any) html << "</table>\n";
+}
+
 }  // namespace
 
 std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures) {
@@ -184,6 +210,7 @@ std::string index_html(db::Database& db, const CampaignFits& fits, const std::ve
   fit_tables(html, fits);
   both_ways_table(html, fits);
   clog_table(html, fits);
+  adaptive_table(html, db, fits);
   html << "<h2>Figures</h2>\n";
   for (const ReportFigure& f : figures) {
     html << "<h3>" << html_escape(f.title) << "</h3>\n";

@@ -36,6 +36,9 @@ echo "ok  a finished adaptive campaign run again decides nothing"
 "$BIN" campaign status --dir "$WORK/clean" > "$WORK/status"
 grep -q "adaptive" "$WORK/status" && grep -q "budget spent" "$WORK/status" || { cat "$WORK/status"; fail "campaign status does not show the decisions"; }
 echo "ok  campaign status shows the decisions"
+grep -q "Adaptive decisions" "$WORK/clean/report/index.html" && grep -q "budget spent" "$WORK/clean/report/index.html" \
+  || fail "the report does not show the decisions"
+echo "ok  the report shows the decisions"
 
 # chaos: kill at random moments, re-run until done; the same decisions and results
 RANDOM=${CHAOS_SEED:-7}

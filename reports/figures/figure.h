@@ -58,6 +58,7 @@ ReportFigure k_vs_Esp(const FigureContext& c);
 ReportFigure k_vs_Kb(const FigureContext& c);
 ReportFigure k_heatmap_Kl_Kb(const FigureContext& c);
 ReportFigure velocity_profiles(const FigureContext& c);
+ReportFigure velocity_regimes(const FigureContext& c);
 ReportFigure drain_q_vs_w(const FigureContext& c);
 ReportFigure drain_collapse(const FigureContext& c);
 ReportFigure drain_curves(const FigureContext& c);

@@ -4,14 +4,22 @@
 # killed (SIGKILL) at random moments takes the same decisions and adds the same jobs, each job
 # once, with bit-identical results; a finished campaign run again adds nothing; the decisions
 # are in the database and in `campaign status`; a bad adaptive block is refused, naming its field.
+# The long form (issue 31 item 9, by hand: ctest -L validation -R adaptive_chaos): two series,
+# 8 added jobs each, and at least CHAOS_MIN_KILLS (100) coordinator kills at short intervals.
 source "$(dirname "$0")/lib.sh"
-cat > "$WORK/sweep.json" <<'J'
+MIN_KILLS=${CHAOS_MIN_KILLS:-2}
+ADDED=${ADAPTIVE_ADDED:-3}
+LAMBDAS=${ADAPTIVE_LAMBDAS:-'"inf"'}
+DELAY_MS=${CHAOS_DELAY_MS:-1500}
+T_MAX=${ADAPTIVE_T_MAX:-300}
+cat > "$WORK/sweep.json" <<J
 {"name": "adaptive",
- "base": {"N": 150, "W": 10, "E_sp": 100, "lambda": "inf"},
- "run": {"t_max": 300, "target_rel_err": 1e-6, "min_window": 10, "checkpoint_interval": 2},
- "sweep": {"w": [3, 4, 5, 6]},
- "adaptive": {"target": {"k_err": 0.001}, "w_range": [2.5, 8], "w_step": 0.5, "max_added_jobs": 3}}
+ "base": {"N": 150, "W": 10, "E_sp": 100},
+ "run": {"t_max": $T_MAX, "target_rel_err": 1e-6, "min_window": 10, "checkpoint_interval": 2},
+ "sweep": {"product": [{"lambda": [$LAMBDAS]}, {"w": [3, 4, 5, 6]}]},
+ "adaptive": {"target": {"k_err": 0.001}, "w_range": [2.5, 8], "w_step": 0.5, "max_added_jobs": $ADDED}}
 J
+SERIES=$(echo "$LAMBDAS" | tr ',' '\n' | wc -l)
 decisions() {
   sqlite3 "$1/campaign.sqlite" "SELECT series_key, seq, action, coalesce(job_key, '-'), coalesce(w, '-'), coalesce(replica, '-'),
                                 reason FROM adaptive_decisions ORDER BY series_key, seq"
@@ -22,11 +30,11 @@ results() {
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> "$WORK/clean.log"
 clean=$(decisions "$WORK/clean")
 echo "$clean" | cut -c1-12,65- | sed 's/^/  /'
-[ "$(echo "$clean" | grep -c '|add|')" -eq 3 ] || fail "expected 3 added jobs (the budget), got: $clean"
-echo "$clean" | tail -n 1 | grep -q '|stop|.*budget spent' || fail "the series should stop on its budget: $clean"
-[ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM results")" -eq 7 ] || fail "expected 7 results (4 + 3)"
+[ "$(echo "$clean" | grep -c '|add|')" -eq $((SERIES * ADDED)) ] || fail "expected $ADDED added jobs per series (the budget), got: $clean"
+[ "$(echo "$clean" | grep -c '|stop|.*budget spent')" -eq "$SERIES" ] || fail "every series should stop on its budget: $clean"
+[ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM results")" -eq $((SERIES * (4 + ADDED))) ] || fail "expected $((SERIES * (4 + ADDED))) results"
 grep -q "adaptive .* add" "$WORK/clean.log" || fail "the coordinator did not log its decisions"
-echo "ok  the series grew by 3 jobs and stopped on its budget"
+echo "ok  $SERIES series grew by $ADDED jobs each and stopped on their budget"
 
 # run again: nothing is added, nothing runs
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> /dev/null
@@ -45,10 +53,10 @@ RANDOM=${CHAOS_SEED:-7}
 rounds=0 kills=0
 while :; do
   rounds=$((rounds + 1))
-  [ "$rounds" -le 60 ] || fail "no completion after 60 rounds"
+  [ "$rounds" -le $((MIN_KILLS * 3 + 60)) ] || fail "no completion after $rounds rounds"
   "$BIN" run "$WORK/sweep.json" --dir "$WORK/chaos" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
   coord=$!
-  delay=$((RANDOM % 1500 + 300))
+  delay=$((RANDOM % DELAY_MS + 300))
   sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
   if [ $((RANDOM % 2)) -eq 0 ]; then
     pid=$(pgrep -f "worker $WORK/chaos" | head -n 1 || true)
@@ -59,7 +67,7 @@ while :; do
   [ "$rc" -eq 0 ] && break
 done
 echo "chaos: $rounds rounds, $kills coordinator kills"
-[ "$kills" -ge 2 ] || fail "too few kills to mean anything"
+[ "$kills" -ge "$MIN_KILLS" ] || fail "$kills kills, fewer than $MIN_KILLS: lengthen the campaign"
 [ "$(decisions "$WORK/chaos")" = "$clean" ] || { diff <(echo "$clean") <(decisions "$WORK/chaos"); fail "decisions differ after kills"; }
 [ "$(results "$WORK/chaos")" = "$(results "$WORK/clean")" ] || fail "results differ after kills"
 [ "$(sqlite3 "$WORK/chaos/campaign.sqlite" "SELECT count(*) - count(DISTINCT job_key) FROM results")" -eq 0 ] || fail "duplicate results"

@@ -94,7 +94,8 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.max_overlap = smooth_->max_overlap();
   } else {
     const TermOutput o = rough_->accumulate(s, s.f);
-    r.U_contact = o.energy + rough_core_->accumulate(s, s.f).energy + rough_fold_->accumulate(s, s.f).energy;
+    r.U_contact = o.energy + rough_core_->accumulate(s, s.f).energy +
+                  rough_fold_->accumulate_with_folds(s, s.f, fold_vertices_).energy;
     r.P_friction = o.power;
     r.max_overlap = std::max({rough_->max_overlap(), rough_core_->max_overlap(), rough_fold_->max_overlap()});
   }
@@ -200,10 +201,12 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
       perimeter += edges.len[k];
       longest = edges.len[k] > longest ? edges.len[k] : longest;
     }
-    // the smooth contact's fold pairs act only where the polygon folds (at rest: nowhere)
-    for (int k = 0; smooth_ && k < n; ++k) {
+    // the fold pairs (of the smooth contact, or the rough model's fold barrier) act only where
+    // the polygon folds (at rest: nowhere)
+    const DpSmoothContact* folds = smooth_ ? smooth_.get() : rough_fold_.get();
+    for (int k = 0; k < n; ++k) {
       const int i = edges.first + k, in = poly_.prev[i] - edges.first;
-      if (smooth_->fold_may_act(edges.dot(in, k), edges.sq[in], edges.sq[k], edges.species))
+      if (folds->fold_may_act(edges.dot(in, k), edges.sq[in], edges.sq[k], edges.species))
         ch.fold_vertices.push_back(i);  // grows to its largest once, then no allocation
     }
     // most polygons are far from the orifice: one test for the polygon, then one per edge

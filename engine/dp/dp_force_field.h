@@ -121,7 +121,7 @@ class DpForceField {
   int threads_ = 1;
   bool edge_outgrown_ = false;    ///< set by shape_pass
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing
-  std::vector<int> fold_vertices_; ///< vertices at which the smooth contact's fold pairs may act, increasing
+  std::vector<int> fold_vertices_; ///< vertices at which the fold pairs (smooth contact, rough fold barrier) may act, increasing
 };
 
 }  // namespace beverloo

@@ -77,6 +77,7 @@ void DpForceField::topology_changed() {
 void DpForceField::set_threads(int threads) {
   threads_ = threads < 1 ? 1 : threads;
   if (smooth_) smooth_->set_threads(threads_);
+  if (rough_core_) rough_core_->set_threads(threads_);  // the rough disks and fold barrier: one thread
 }
 
 ForceReport DpForceField::compute(ParticleState<2>& s) {

@@ -35,7 +35,8 @@ class DpForceField {
   /// Zeroes s.f, brings the vertex list up to date and adds every term. O(vertices).
   ForceReport compute(ParticleState<2>& s);
   /// OpenMP threads for the evaluation: the shape terms by polygons, walls, gravity and drag
-  /// by vertices, the smooth contact by list rows (its force writes replayed in order). Work
+  /// by vertices, the smooth contact and the rough model's edge core by list rows (their force
+  /// writes replayed in order); the rough disks and the fold pairs on one thread. Work
   /// is cut into fixed chunks whatever the count and every sum is taken chunk by chunk in
   /// chunk order, so every count gives the same forces and energies, bit for bit.
   void set_threads(int threads);

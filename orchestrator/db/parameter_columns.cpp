@@ -11,7 +11,7 @@ namespace {
 // The runs view of schema 0003 (jobs' hand-written columns, results); the generated parameter
 // columns are appended to it.
 constexpr const char* kRunsJobColumns =
-    "j.key, j.dir, j.state, j.model, j.dimension, j.N, j.W_container, j.w, j.theta_w_left_deg, j.theta_w_right_deg, "
+    "j.key, j.dir, j.state, j.engine_version, j.model, j.dimension, j.N, j.W_container, j.w, j.theta_w_left_deg, j.theta_w_right_deg, "
     "j.E_sp, j.E_w, j.zeta, j.mu, j.lambda, j.dissipation_scale, j.replica, j.seed, "
     "j.n_v, j.K_a, j.K_l, j.K_b, j.E_c";
 constexpr const char* kRunsResultColumns =
@@ -42,10 +42,15 @@ void sync_parameter_columns(Database& db) {
             ") VIRTUAL");
     added = true;
   }
-  if (!added) return;
+  const std::string view = std::string("CREATE VIEW runs AS SELECT ") + kRunsJobColumns + generated + ", " +
+                           kRunsResultColumns + " FROM jobs j LEFT JOIN results r ON r.job_key = j.key";
+  // rebuilt when a column was added or the view is another binary's (a database made before the
+  // view had engine_version, say): the view holds no data, so this loses nothing
+  Statement current = db.prepare("SELECT coalesce(sql, '') FROM sqlite_master WHERE type = 'view' AND name = 'runs'");
+  if (!added && current.step() && current.get_text(0) == view) return;
+  current.reset();
   db.exec("DROP VIEW IF EXISTS runs");
-  db.exec(std::string("CREATE VIEW runs AS SELECT ") + kRunsJobColumns + generated + ", " + kRunsResultColumns +
-          " FROM jobs j LEFT JOIN results r ON r.job_key = j.key");
+  db.exec(view);
 }
 
 }  // namespace beverloo::db

@@ -120,9 +120,13 @@ void DpSystem::body_friction(VecArray<2>& out) {
 }
 
 namespace {
-/// Within a thick funnel wall (within T/2 of its core), or beyond a side wall by at most T/2:
-/// in a wall, not through it.
-bool inside_a_wall(const FunnelCores& cores, const Hopper<2>& hopper, const Vec<2>& x) {
+/// Within a thick funnel wall (within T/2 of its core), or beyond a side wall by at most T/2 plus
+/// the vertex's own wall reach `side_reach`: in a wall, not through it. A side wall of walls with
+/// a thickness is a half-space whose force keeps growing beyond its line (HopperWalls::add_side),
+/// so a vertex pressed into it is pushed back from any depth; it is lost only when its whole
+/// wall disk has passed the wall's core line (T/2 behind the surface). (Engine 0.5.0 stopped a
+/// friction-only flow whose vertex was pressed 0.086 deep, 0.52 l0, as gone through.)
+bool inside_a_wall(const FunnelCores& cores, const Hopper<2>& hopper, const Vec<2>& x, double side_reach) {
   const double h = cores.half_thickness();
   for (int k = 0; k < 2; ++k)
     if ((x - cores.nearest_point(k, x)).squaredNorm() <= h * h) return true;
@@ -130,7 +134,7 @@ bool inside_a_wall(const FunnelCores& cores, const Hopper<2>& hopper, const Vec<
     if (!hopper.has_wall(k)) continue;
     const Vec<2> a = hopper.wall_start(k);
     const double beyond = k == 2 ? a[0] - x[0] : x[0] - a[0];
-    if (x[1] > a[1] && beyond >= 0 && beyond <= h) return true;
+    if (x[1] > a[1] && beyond >= 0 && beyond <= h + side_reach) return true;
   }
   return false;
 }
@@ -155,7 +159,8 @@ void DpSystem::check_vertices(double t) const {
     const Vec<2>& x = verts_.x[i];
     const Vec<2>& next = verts_.x[poly_.next[i]];
     const int wall = thick ? cores.crossed(x, next) : hopper_.funnel_wall_crossed(x, next);
-    const bool outside = !hopper_.contains(x) && !(thick && inside_a_wall(cores, hopper_, x));
+    const bool outside =
+        !hopper_.contains(x) && !(thick && inside_a_wall(cores, hopper_, x, 0.5 * shape_.wall[verts_.species[i]]));
     if (outside || wall >= 0) {
       std::ostringstream msg;
       msg << "polygon " << poly_.owner[i] << " went through a wall at t = " << t << ": ";

@@ -198,6 +198,39 @@ TEST(DpProtocol, PolygonDrapedAroundAnOrificeCornerIsNotThroughTheWall) {
   }
 }
 
+TEST(DpProtocol, AVertexPressedIntoAThickSideWallIsInItUntilItsDiskPassesTheCore) {
+  // With walls of a thickness the side walls are half-spaces (their force grows beyond the
+  // line): a vertex pressed in by a friction-only pile is pushed back, not gone through, until
+  // its whole wall disk is T/2 behind the surface.
+  SimConfig c = dp_config("dp_smooth", 2);
+  c.dp.wall_width = 1;
+  c.dp.wall_thickness = 1;
+  c.resolve_and_validate();
+  const Hopper<2> h = make_hopper<2>(c);
+  DpSystem dp(c, h);
+  ParticleState<2> bodies;
+  Rng rng(3);
+  dp.place_bodies(bodies, rng);
+  dp.build_polygons(bodies, rng);
+  const int i = dp.polygons().first[0];
+  const double T = c.dp.wall_thickness * dp.shape().l0[0], reach = 0.5 * dp.shape().wall[dp.verts().species[i]];
+  const Vec<2> a = h.wall_start(2);
+  const double y = a[1] + 3.0;
+  const Vec<2> keep = dp.verts().x[i];
+  for (const double depth : {0.25 * T, 0.75 * T, 0.5 * T + 0.9 * reach}) {
+    dp.verts().x[i] = Vec<2>(a[0] - depth, y);
+    EXPECT_NO_THROW(dp.check_vertices(1.0)) << "depth " << depth;
+  }
+  dp.verts().x[i] = Vec<2>(a[0] - (0.5 * T + 1.1 * reach), y);
+  try {
+    dp.check_vertices(1.0);
+    FAIL() << "a vertex whose disk is past the side wall's core is outside";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the container"), std::string::npos) << e.what();
+  }
+  dp.verts().x[i] = keep;
+}
+
 TEST(DpDynamics, CrushedContactsStopTheRunWithAReason) {
   SimConfig c = flowing_dp("dp_smooth", 10, 0.1);
   c.dp.E_c = 1e-3;  // far too soft to hold the polygons' weight

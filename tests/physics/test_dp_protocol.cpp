@@ -162,6 +162,14 @@ TEST(DpDynamics, SoftestRoughPolygonsStaySimpleWhileFlowing) { check_softest_pol
 
 /// Polygon m's vertices along a C-shaped closed path (corner points, each side split in two):
 /// around the right orifice corner (w/2, 0) with its bend at x = bend, above and below the floor.
+/// The bodies placed and the polygons built, as a run's start does (seed 3).
+void place_polygons(DpSystem& dp) {
+  ParticleState<2> bodies;
+  Rng rng(3);
+  dp.place_bodies(bodies, rng);
+  dp.build_polygons(bodies, rng);
+}
+
 void drape_polygon_as_c(DpSystem& dp, int m, double bend) {
   const std::vector<Vec<2>> corners = {{bend + 1.3, 0.3}, {bend - 0.3, 0.3}, {bend - 0.3, -0.3}, {bend + 1.3, -0.3},
                                        {bend + 1.3, -0.1}, {bend - 0.1, -0.1}, {bend - 0.1, 0.15}, {bend + 1.3, 0.15}};
@@ -182,10 +190,7 @@ TEST(DpProtocol, PolygonDrapedAroundAnOrificeCornerIsNotThroughTheWall) {
   SimConfig c = dp_config("dp_smooth", 2);
   const Hopper<2> h = make_hopper<2>(c);
   DpSystem dp(c, h);
-  ParticleState<2> bodies;
-  Rng rng(3);
-  dp.place_bodies(bodies, rng);
-  dp.build_polygons(bodies, rng);
+  place_polygons(dp);
   const double corner = h.orifice_half_width();
   drape_polygon_as_c(dp, 0, corner - 0.15);  // bend inside the orifice: wrapped around the corner
   EXPECT_NO_THROW(dp.check_vertices(1.0));
@@ -208,10 +213,7 @@ TEST(DpProtocol, AVertexPressedIntoAThickSideWallIsInItUntilItsDiskPassesTheCore
   c.resolve_and_validate();
   const Hopper<2> h = make_hopper<2>(c);
   DpSystem dp(c, h);
-  ParticleState<2> bodies;
-  Rng rng(3);
-  dp.place_bodies(bodies, rng);
-  dp.build_polygons(bodies, rng);
+  place_polygons(dp);
   const int i = dp.polygons().first[0];
   const double T = c.dp.wall_thickness * dp.shape().l0[0], reach = 0.5 * dp.shape().wall[dp.verts().species[i]];
   const Vec<2> a = h.wall_start(2);

@@ -129,7 +129,7 @@ namespace {
 bool inside_a_wall(const FunnelCores& cores, const Hopper<2>& hopper, const Vec<2>& x, double side_reach) {
   const double h = cores.half_thickness();
   for (int k = 0; k < 2; ++k)
-    if ((x - cores.nearest_point(k, x)).squaredNorm() <= h * h) return true;
+    if (cores.contains(k, x)) return true;
   for (int k = 2; k < 4; ++k) {
     if (!hopper.has_wall(k)) continue;
     const Vec<2> a = hopper.wall_start(k);

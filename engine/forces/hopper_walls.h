@@ -3,7 +3,8 @@
 /// \brief Harmonic walls: U = (E_w/2)(1 - 2 d_w/sigma_m)^2 for d_w < sigma_m/2, where d_w is the
 /// distance to the nearest point of a wall (so wall ends at the orifice act as corners). DP
 /// funnel walls may have a thickness (FunnelCores): then d_w = |r - core| - T/2, negative inside
-/// the wall, and the same form (its force keeps growing inside).
+/// the wall, below the core line the slab's distance, and the same form (its force keeps growing
+/// inside).
 #include "../geometry/funnel_cores.h"
 #include "../geometry/hopper.h"
 #include "../neighbor/neighbor_list.h"
@@ -62,13 +63,22 @@ class HopperWalls final : public ForceTerm<D> {
   }
 
  private:
-  /// Funnel wall k of thickness T against a vertex of reach `half` at x: d = |x - core| - T/2.
+  /// Funnel wall k of thickness T against a vertex of reach `half` at x: d = |x - core| - T/2
+  /// (the capsule), or below the core line within its span the slab's distance (FunnelCores).
   double add_thick(const Vec<D>& x, int k, double half, double inv_half, Vec<D>& fi) const {
+    double dU_dd;
+    if (cores_->in_slab_region(k, x)) {
+      Vec<D> gradient;
+      const double d = cores_->slab_distance(k, x, gradient);
+      if (d >= half) return 0;
+      const double energy = HarmonicOverlap::energy(eps_, d, inv_half, dU_dd);
+      fi += -dU_dd * gradient;
+      return energy;
+    }
     const Vec<D> away = x - cores_->nearest_point(k, x);
     const double r2 = away.squaredNorm(), reach = half + cores_->half_thickness();
     if (r2 >= reach * reach || r2 == 0) return 0;
     const double r = std::sqrt(r2);
-    double dU_dd;
     const double energy = HarmonicOverlap::energy(eps_, r - cores_->half_thickness(), inv_half, dU_dd);
     fi += (-dU_dd / r) * away;
     return energy;

@@ -12,9 +12,17 @@
 /// and a vertex's distance to the wall, |r - core| - T/2, is continuous everywhere, negative
 /// inside the wall: the wall keeps pushing a vertex that has entered it back out, up to an
 /// energy (E_w/2)(1 + T/sigma_w)^2 at the core, where a line wall (T = 0) gives way at E_w/2.
-/// A vertex through the core has gone through the wall (an edge crossing a core is a leak).
-/// The side walls of such a container are half-spaces (HopperWalls::add_side): a vertex beyond
-/// one by more than T/2, the funnel cores' depth, has gone through it.
+/// Below the core line (the slab's lower half and beyond), as in the authors' code, where the
+/// bottom wall pushes a vertex back up from any depth (hopper2D.cpp ~1745-1760: a half-space in
+/// the hopper's bulk), the slab pushes back into the container: d = -T/2 - |s| with s the
+/// depth below the core line. Within T of the lip (along the wall) it turns over smoothly to
+/// the lip's push outward, d = -T/2 + |s| (1 - 2 t / T) at a distance t along the core, so that
+/// the distance (and the energy) stays continuous everywhere (engine 0.6.0; 0.5.0 took the
+/// capsule everywhere and pushed a vertex past the core out through the floor: friction-only
+/// flows lost vertices there after impacts, docs/validation.md). A polygon has gone through a
+/// funnel wall when an edge crosses the slab's bottom (T behind the surface) or, within T/2 of
+/// the lip, where the slab pushes outward, the core. The side walls of such a container are
+/// half-spaces (HopperWalls::add_side).
 #include <cmath>
 
 #include "hopper.h"
@@ -28,6 +36,7 @@ class FunnelCores {
       const Vec<2> u = hopper.wall_direction(k), n = hopper.funnel_inward_normal(k);
       a_[k] = hopper.wall_start(k) + half_ * u - half_ * n;
       u_[k] = u;
+      n_[k] = n;
       len_[k] = hopper.wall_length(k) - half_;  // ends under the wall's far end (a ray stays a ray)
     }
   }
@@ -39,23 +48,51 @@ class FunnelCores {
     t = t < 0 ? 0 : (t > len_[k] ? len_[k] : t);
     return a_[k] + t * u_[k];
   }
+  /// Whether p lies below core k's line within the core's span (the slab's region, where the
+  /// distance is the slab's, below); elsewhere it is the capsule's |p - nearest_point| - T/2.
+  bool in_slab_region(int k, const Vec<2>& p) const {
+    const Vec<2> q = p - a_[k];
+    const double t = q.dot(u_[k]);
+    return q.dot(n_[k]) < 0 && t > 0 && t < len_[k];
+  }
+  /// In the slab's region: the distance d of p from funnel wall k's surface (negative: inside),
+  /// -T/2 - s g(t) with s < 0 the signed distance from the core line and g = 1 - 2t/T within T
+  /// of the lip, else -1; and its gradient.
+  double slab_distance(int k, const Vec<2>& p, Vec<2>& gradient) const {
+    const Vec<2> q = p - a_[k];
+    const double t = q.dot(u_[k]), s = q.dot(n_[k]);
+    const double span = 2 * half_;  // the turn-over length T
+    const double g = t < span ? 1 - 2 * t / span : -1.0;
+    gradient = (t < span ? 2 * s / span : 0.0) * u_[k] - g * n_[k];
+    return -half_ - s * g;
+  }
+  /// Whether p is in funnel wall k: within T/2 of its core, or in its slab down to the bottom.
+  bool contains(int k, const Vec<2>& p) const {
+    if ((p - nearest_point(k, p)).squaredNorm() <= half_ * half_) return true;
+    const Vec<2> q = p - a_[k];
+    const double t = q.dot(u_[k]), s = q.dot(n_[k]);
+    return t > 0 && t < len_[k] && s < 0 && s >= -half_;
+  }
   /// Every core point lies within this distance of its wall's segment (the lip's centre is
   /// the farthest): the walls' list reach grows by it and by T/2.
   double offset_from_wall() const { return half_ * std::sqrt(2.0); }
-  /// The core (0 or 1) that the segment p -> q properly crosses, or -1.
+  /// The funnel wall (0 or 1) that the segment p -> q goes through, or -1: it properly crosses
+  /// the slab's bottom, or the core within T/2 of the lip (where the slab pushes outward).
   int crossed(const Vec<2>& p, const Vec<2>& q) const {
     for (int k = 0; k < 2; ++k) {
       if (len_[k] <= 0) continue;
       // a ray (vertical funnel wall): its piece up to the higher of p and q
       const double length = std::isinf(len_[k]) ? std::max(0.0, std::max(p[1], q[1]) - a_[k][1]) : len_[k];
-      if (segments_cross(a_[k], a_[k] + length * u_[k], p, q)) return k;
+      const Vec<2> bottom = a_[k] - half_ * n_[k];
+      if (segments_cross(bottom, bottom + length * u_[k], p, q)) return k;
+      if (segments_cross(a_[k], a_[k] + std::min(half_, length) * u_[k], p, q)) return k;
     }
     return -1;
   }
 
  private:
   double half_;
-  Vec<2> a_[2], u_[2];
+  Vec<2> a_[2], u_[2], n_[2];
   double len_[2];
 };
 

@@ -185,8 +185,8 @@ TEST(Sweep, JobKeysAreStableGoldenValues) {
   const auto jobs = expand({{"base", {{"N", 400}, {"W", 25}, {"E_sp", 100}}},
                             {"sweep", {{"product", {{{"lambda", {0, "inf"}}}, {{"w", {3, 8}}}}}}}});
   EXPECT_EQ(jobs[0].key.size(), 64u);
-  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.5.0");
-  EXPECT_EQ(jobs[0].key, "42934994e819737a862a7045516a7a1947508479ffa063b1101fb1c1a55b37a3");
+  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.6.0");
+  EXPECT_EQ(jobs[0].key, "196b3090c80ce4e821eed1bd0989dbcaecc4c5ce9a6b42dbeafe260b52185012");
 }
 
 TEST(Sweep, KeyIsSensitiveToEveryParameterButNotToRunBookkeeping) {

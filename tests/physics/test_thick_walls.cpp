@@ -92,13 +92,12 @@ TEST(ThickWalls, ForcesAreTheEnergysGradientAroundTheLipAndInsideTheWall) {
   }
 }
 
-TEST(ThickWalls, EnergyIsContinuousAlongAPathOverTheLipAndUnderTheFloor) {
-  // Along the floor, over the lip, down its inner side and out under the floor: no jumps.
-  ThickFloor t(1.0);
+/// The walls' energy along a path over the floor, round the lip and under the floor at `depth`
+/// below the core line (= T/2 + the gap: the path is closed), in `steps` steps.
+std::vector<double> energy_along_lip_path(ThickFloor& t, int steps, double depth) {
   const double half = t.h.orifice_half_width(), T = t.l0(), gap = 0.3 * T;
   const Vec<2> lip = t.ff.funnel_cores().lip_centre(1);
   std::vector<double> energy;
-  const int steps = 400;
   for (int k = 0; k <= steps; ++k) {
     const double s = double(k) / steps;
     Vec<2> p;
@@ -107,15 +106,66 @@ TEST(ThickWalls, EnergyIsContinuousAlongAPathOverTheLipAndUnderTheFloor) {
     else if (s < 0.75) {  // round the bead at gap from its surface, from the top to below it
       const double a = 0.5 * M_PI + 2 * (s - 0.25) * M_PI;
       p = lip + (T / 2 + gap) * Vec<2>(std::cos(a), std::sin(a));
-    } else  // under the floor, outward
-      p = lip + Vec<2>(4 * (s - 0.75) * 1.5 * T, -(T / 2 + gap));
+    } else  // under the floor, outward: from under the lip into the slab's region
+      p = lip + Vec<2>(4 * (s - 0.75) * 1.5 * T, -depth);
     energy.push_back(t.wall_energy(p));
   }
-  double largest_step = 0;
-  for (std::size_t k = 1; k < energy.size(); ++k) largest_step = std::max(largest_step, std::fabs(energy[k] - energy[k - 1]));
-  // the energy at this gap is ~ (E_w/2)(1 - 0.6)^2 = 4; 400 steps: continuous means small steps
-  EXPECT_LT(largest_step, 0.02 * 0.5 * t.c.E_w);
-  EXPECT_GT(*std::min_element(energy.begin(), energy.end()), 0.5 * 0.5 * t.c.E_w * 0.16);
+  return energy;
+}
+
+double largest_step(const std::vector<double>& e) {
+  double largest = 0;
+  for (std::size_t k = 1; k < e.size(); ++k) largest = std::max(largest, std::fabs(e[k] - e[k - 1]));
+  return largest;
+}
+
+TEST(ThickWalls, EnergyIsContinuousAlongAPathOverTheLipAndUnderTheFloor) {
+  // Along the floor, over the lip, down its inner side and out under the floor: no jumps. Under
+  // the floor the energy turns over from the lip's push outward to the slab's push back up
+  // (FunnelCores::slab_distance) and grows steeply, but continuously: ten times the resolution
+  // makes the largest step about ten times smaller (a jump would stay).
+  ThickFloor t(1.0);
+  const double T = t.l0(), depth = 0.5 * T + 0.3 * T;
+  const std::vector<double> coarse = energy_along_lip_path(t, 400, depth), fine = energy_along_lip_path(t, 4000, depth);
+  EXPECT_LT(largest_step(fine), 0.2 * largest_step(coarse));
+  EXPECT_LT(largest_step(fine), 0.02 * 0.5 * t.c.E_w);
+  // over the floor and round the lip (the first three quarters) the distance stays the gap
+  const std::vector<double> top(coarse.begin(), coarse.begin() + 300);
+  EXPECT_LT(largest_step(top), 0.02 * 0.5 * t.c.E_w);
+  EXPECT_GT(*std::min_element(coarse.begin(), coarse.end()), 0.5 * 0.5 * t.c.E_w * 0.16);
+}
+
+TEST(ThickWalls, BelowTheCoreTheFloorPushesBackUpAndItsForceIsTheEnergysGradient) {
+  // Deep in the floor, away from the lip, the slab pushes a vertex up from any depth (as the
+  // authors' bottom wall does); within T of the lip it turns over to the lip's push outward.
+  ThickFloor t(1.0);
+  const double T = t.l0(), x = -4.0;
+  double previous = 0;
+  for (double y : {-0.4 * T, -0.6 * T, -0.9 * T, -1.2 * T}) {
+    Vec<2> f;
+    const double e = t.wall_energy(Vec<2>(x, y), &f);
+    EXPECT_GT(e, previous) << "y = " << y;
+    EXPECT_GT(f[1], 0) << "pushed up at y = " << y;
+    EXPECT_NEAR(f[0], 0, 1e-9);
+    previous = e;
+  }
+  const Vec<2> lip = t.ff.funnel_cores().lip_centre(1);
+  for (const Vec<2>& p : {Vec<2>(lip + Vec<2>(0.2 * T, -0.3 * T)), Vec<2>(lip + Vec<2>(0.7 * T, -0.4 * T)),
+                          Vec<2>(lip + Vec<2>(1.5 * T, -0.6 * T)), Vec<2>(x, -0.7 * T)}) {
+    Vec<2> f;
+    t.wall_energy(p, &f);
+    const double eps = 1e-7;
+    for (int a = 0; a < 2; ++a) {
+      Vec<2> hi = p, lo = p;
+      hi[a] += eps;
+      lo[a] -= eps;
+      EXPECT_NEAR(f[a], -(t.wall_energy(hi) - t.wall_energy(lo)) / (2 * eps), 1e-5 * std::max(1.0, f.norm()))
+          << "component " << a << " at " << p.transpose();
+    }
+  }
+  Vec<2> f;
+  t.wall_energy(lip + Vec<2>(0.1 * T, -0.3 * T), &f);
+  EXPECT_LT(f[1], 0) << "just under the lip a vertex is pushed down, out of the wall";
 }
 
 TEST(ThickWalls, SideWallsOfAThickContainerPushAVertexBackInFromBeyondThem) {
@@ -139,14 +189,18 @@ TEST(ThickWalls, SideWallsOfAThickContainerPushAVertexBackInFromBeyondThem) {
   EXPECT_GT(f[0], 0);
 }
 
-TEST(ThickWalls, AWallIsGoneThroughOnlyPastItsCore) {
+TEST(ThickWalls, AWallIsGoneThroughOnlyPastItsSlab) {
   const Hopper<2> h(20, 4, M_PI / 2, M_PI / 2);
   const FunnelCores cores(h, 0.2);
-  // an edge from above the floor to inside it (depth 0.05 < T/2 = 0.1): not through
+  // an edge from above the floor to inside it (depth 0.05 < T/2 = 0.1, and 0.15 < T): not through
   EXPECT_EQ(cores.crossed(Vec<2>(5, 0.1), Vec<2>(5.2, -0.05)), -1);
-  // to beyond the core (depth 0.15): through the right wall
-  EXPECT_EQ(cores.crossed(Vec<2>(5, 0.1), Vec<2>(5.2, -0.15)), 1);
-  EXPECT_EQ(cores.crossed(Vec<2>(-5, 0.1), Vec<2>(-5.2, -0.15)), 0);
+  EXPECT_EQ(cores.crossed(Vec<2>(5, 0.1), Vec<2>(5.2, -0.15)), -1);
+  // to beyond the slab's bottom (depth 0.25 > T): through the right wall
+  EXPECT_EQ(cores.crossed(Vec<2>(5, 0.1), Vec<2>(5.2, -0.25)), 1);
+  EXPECT_EQ(cores.crossed(Vec<2>(-5, 0.1), Vec<2>(-5.2, -0.25)), 0);
+  // next to the lip, where the slab pushes outward, past the core is through
+  const Vec<2> lip = cores.lip_centre(1);
+  EXPECT_EQ(cores.crossed(lip + Vec<2>(0.05, 0.05), lip + Vec<2>(0.05, -0.05)), 1);
   // through the orifice, past the lip: nothing crossed
   EXPECT_EQ(cores.crossed(Vec<2>(1.8, 0.1), Vec<2>(1.8, -0.5)), -1);
   // inclined walls: the core lies T/2 behind the wall's line, parallel to it
@@ -158,7 +212,8 @@ TEST(ThickWalls, AWallIsGoneThroughOnlyPastItsCore) {
   const Vec<2> on_wall = a + 2.0 * u;
   EXPECT_NEAR((on_wall - inclined.nearest_point(1, on_wall)).norm(), 0.1, 1e-12);
   EXPECT_EQ(inclined.crossed(on_wall + 0.05 * n, on_wall - 0.05 * n), -1);
-  EXPECT_EQ(inclined.crossed(on_wall + 0.05 * n, on_wall - 0.15 * n), 1);
+  EXPECT_EQ(inclined.crossed(on_wall + 0.05 * n, on_wall - 0.15 * n), -1);
+  EXPECT_EQ(inclined.crossed(on_wall + 0.05 * n, on_wall - 0.25 * n), 1);
 }
 
 }  // namespace

@@ -120,7 +120,7 @@ void DpSystem::body_friction(VecArray<2>& out) {
 }
 
 namespace {
-/// Within a thick funnel wall (within T/2 of its core), or beyond a side wall by at most T/2 plus
+/// In a thick funnel wall (FunnelCores::contains: its capsule or its slab), or beyond a side wall by at most T/2 plus
 /// the vertex's own wall reach `side_reach`: in a wall, not through it. A side wall of walls with
 /// a thickness is a half-space whose force keeps growing beyond its line (HopperWalls::add_side),
 /// so a vertex pressed into it is pushed back from any depth; it is lost only when its whole
@@ -152,7 +152,7 @@ void DpSystem::check_vertices(double t) const {
   // A polygon may wrap around an orifice corner (walls are lines), with vertices under the
   // floor; it has gone through a wall only if one of its edges cuts one. Vertices beyond the
   // side walls are outside the container.
-  // thick walls (dp.wall_thickness): a vertex may be inside a wall; it is through only past the core
+  // thick walls (dp.wall_thickness): a vertex may be inside a wall; it is through only past the slab (FunnelCores::crossed)
   const FunnelCores& cores = ff_->funnel_cores();
   const bool thick = cores.half_thickness() > 0;
   for (int i = 0; i < verts_.size(); ++i) {

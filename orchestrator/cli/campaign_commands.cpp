@@ -22,6 +22,7 @@
 #include "orchestrator/campaign/job_explain.h"
 #include "orchestrator/campaign/job_speed.h"
 #include "reports/adaptive_planner.h"
+#include "orchestrator/sweep/adaptive_spec.h"
 #include "orchestrator/campaign/worker.h"
 #include "orchestrator/db/migrations.h"
 #include "core/text_escape.h"
@@ -358,6 +359,15 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
       std::vector<JobSpec> jobs;
       const Sweep s = load_sweep(*check_path, &jobs);
       std::printf("%s: valid, sweep \"%s\", %zu jobs\n", terminal_safe(*check_path).c_str(), terminal_safe(s.name).c_str(), jobs.size());
+      if (const std::optional<AdaptiveSpec> a = AdaptiveSpec::of_sweep(s.source)) {
+        // the grid is the start: say what the planner will add to (docs/sweeps.md)
+        std::printf("adaptive: the grid is the start; per series up to %d more jobs at w in [%g, %g] every %g, until", a->max_added_jobs,
+                    a->w_lo, a->w_hi, a->w_step);
+        if (a->k_err) std::printf(" k_err <= %g", *a->k_err);
+        if (a->k_err && a->beta_err) std::printf(" and");
+        if (a->beta_err) std::printf(" beta_err <= %g", *a->beta_err);
+        std::printf("\n");
+      }
       return exit_code::kOk;
     });
   });

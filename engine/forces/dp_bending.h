@@ -28,8 +28,7 @@ class DpBending final : public ForceTerm<2> {
     return {energy, 0};
   }
   bool active() const { return k_ != 0; }
-  /// Per edge k of the measured polygon: dU/de_k into edges.bend_dx/dy (also at k = -1, the
-  /// last edge), edge k's energy with its next edge into edges.bend_u; on the way the unit
+  /// Per edge k of the measured polygon: dU/de_k into edges.bend_dx/dy, edge k's energy with its next edge into edges.bend_u; on the way the unit
   /// vectors and inverse lengths (edges.ux, uy, inv_len). Only when active().
   void edge_gradients(PolygonEdges& edges) const {
     const int n = edges.count;
@@ -63,8 +62,6 @@ class DpBending final : public ForceTerm<2> {
       dx[e] = (gx - g_along * ux[e]) * inv[e];
       dy[e] = (gy - g_along * uy[e]) * inv[e];
     }
-    dx[-1] = dx[n - 1];
-    dy[-1] = dy[n - 1];
   }
   /// The measured polygon's part: its forces added to f (edge by edge, end vertex then start),
   /// its energy onto `energy`. See DpArea::add_polygon for why per polygon.

@@ -30,8 +30,8 @@ class PolygonEdges {
   PolygonEdges(const PolygonEdges&) {}
   PolygonEdges& operator=(const PolygonEdges&) { return *this; }
 
-  // Every pointer below indexes k = 0 .. count-1; x, y, ux, uy, seg_fx, seg_fy, bend_dx and
-  // bend_dy also k = -1 and k = count (the cyclic neighbours), where the producer wrote them.
+  // Every pointer below indexes k = 0 .. count-1; x, y, ux and uy also k = -1 and k = count
+  // (the cyclic neighbours), where the producer wrote them.
   double* x = nullptr;   ///< positions
   double* y = nullptr;
   double* ex = nullptr;  ///< edge vectors r_next(k) - r_k

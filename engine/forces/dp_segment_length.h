@@ -27,7 +27,7 @@ class DpSegmentLength final : public ForceTerm<2> {
     return {energy, 0};
   }
   /// Per edge k of the measured polygon: the force on its end vertex into edges.seg_fx/fy (its
-  /// start takes minus it), its energy into edges.seg_u; seg_fx/fy also at k = -1 (the last edge).
+  /// start takes minus it), its energy into edges.seg_u.
   void edge_forces(PolygonEdges& edges) const {
     const int n = edges.count;
     const double k = k_[edges.species], l0 = shape_.l0[edges.species];
@@ -45,8 +45,6 @@ class DpSegmentLength final : public ForceTerm<2> {
       fx[e] = along * ex[e];
       fy[e] = along * ey[e];
     }
-    fx[-1] = fx[n - 1];
-    fy[-1] = fy[n - 1];
   }
   /// The measured polygon's part: its forces added to f (edge by edge, end vertex then start),
   /// its energy onto `energy`, its longest edge into `longest` (a running maximum). See

@@ -69,9 +69,7 @@ class FunnelCores {
   /// Whether p is in funnel wall k: within T/2 of its core, or in its slab down to the bottom.
   bool contains(int k, const Vec<2>& p) const {
     if ((p - nearest_point(k, p)).squaredNorm() <= half_ * half_) return true;
-    const Vec<2> q = p - a_[k];
-    const double t = q.dot(u_[k]), s = q.dot(n_[k]);
-    return t > 0 && t < len_[k] && s < 0 && s >= -half_;
+    return in_slab_region(k, p) && (p - a_[k]).dot(n_[k]) >= -half_;
   }
   /// Every core point lies within this distance of its wall's segment (the lip's centre is
   /// the farthest): the walls' list reach grows by it and by T/2.

@@ -44,7 +44,7 @@ struct TimeStepChoice {
   double largest_accepted = 0; ///< the largest explicit dt that would be accepted
   bool automatic = true;
   /// What sets dt "auto": the period term, the damping term or the 1e-3 cap (for an explicit dt,
-  /// the term whose bound is nearest). Friction or drag can set it: a friction-only DP job's dt
+  /// the term that would set dt "auto"). Friction or drag can set it: a friction-only DP job's dt
   /// is tau/5 of its vertex friction, half its contact's T/15.
   std::string limiting_term;
 };

@@ -125,8 +125,11 @@ void CampaignStore::record_decisions(std::int64_t campaign, const std::vector<Pl
       "INSERT INTO adaptive_decisions (campaign_id, series_key, seq, action, job_key, w, replica, reason, k_err, "
       "beta_err, k_err_after, beta_err_after, flowing_points) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, "
       "?12, ?13)");
+  std::vector<const JobSpec*> added;
+  for (const PlanDecision& d : decisions)
+    if (d.job) added.push_back(&*d.job);
+  insert_and_link(campaign, added, next_index);  // after the campaign's jobs, in decision order
   for (const PlanDecision& d : decisions) {
-    if (d.job) insert_and_link(campaign, {&*d.job}, next_index++);
     seq.bind(1, campaign).bind(2, d.series_key);
     seq.step();
     const std::int64_t n = seq.get_int(0);

@@ -34,6 +34,8 @@ echo "$clean" | cut -c1-12,65- | sed 's/^/  /'
 [ "$(echo "$clean" | grep -c '|stop|.*budget spent')" -eq "$SERIES" ] || fail "every series should stop on its budget: $clean"
 [ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM results")" -eq $((SERIES * (4 + ADDED))) ] || fail "expected $((SERIES * (4 + ADDED))) results"
 grep -q "adaptive .* add" "$WORK/clean.log" || fail "the coordinator did not log its decisions"
+[ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM runs WHERE engine_version IS NOT NULL")" -eq $((SERIES * (4 + ADDED))) ] \
+  || fail "the runs view lacks the engine version"
 echo "ok  $SERIES series grew by $ADDED jobs each and stopped on their budget"
 
 # run again: nothing is added, nothing runs

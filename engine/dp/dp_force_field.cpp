@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <sstream>
 
+#include <emmintrin.h>
+
+#include "../integrate/sp_sweeps.h"
+
 namespace beverloo {
 
 std::array<double, 2> DpForceField::list_diameters(const DpShape& shape) {
@@ -80,7 +84,7 @@ void DpForceField::set_threads(int threads) {
   if (rough_core_) rough_core_->set_threads(threads_);  // the rough disks and fold barrier: one thread
 }
 
-ForceReport DpForceField::compute(ParticleState<2>& s) {
+ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
   r.U_shape = shape_pass(s);
@@ -100,7 +104,18 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
     r.P_friction = o.power;
     r.max_overlap = std::max({rough_->max_overlap(), rough_core_->max_overlap(), rough_fold_->max_overlap()});
   }
-  add_vertex_terms(s, r);
+  return r;
+}
+
+ForceReport DpForceField::compute(ParticleState<2>& s) {
+  ForceReport r = shape_list_and_contact(s);
+  add_vertex_terms(s, r, 0.0);
+  return r;
+}
+
+ForceReport DpForceField::compute_and_kick(ParticleState<2>& s, double dt, bool& finite) {
+  ForceReport r = shape_list_and_contact(s);
+  finite = add_vertex_terms(s, r, 0.5 * dt);
   return r;
 }
 
@@ -149,30 +164,115 @@ double add_range(const Term& term, const ParticleState<2>& s, VecArray<2>& f, in
 }
 }  // namespace
 
-void DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r) {
+namespace {
+// What gravity_drag_kick() needs, as plain values and restrict pointers: through the state and
+// the terms (references the force stores might alias) GCC reloaded every array pointer on
+// every vertex, which made a fused sweep slower than three plain ones.
+struct VertexTail {
+  const double* __restrict X;
+  double* __restrict V;
+  double* __restrict F;
+  const double* __restrict inv_m;
+  const std::uint8_t* __restrict species;
+  const std::uint8_t* __restrict waits;  ///< 1: the force and kick wait for the corners
+  double mass[2], drag[2], g, half_dt;
+};
+
+// Vertices [begin, end): gravity's energy and drag's power summed in vertex order; but where
+// a vertex waits for the corners, gravity's force -m g e_y, drag's -c v and the kick
+// v += f dt / (2 m): Gravity::add_to's and Drag::add_to's operations, then kick_one's. Returns
+// whether a kicked position or velocity is not finite.
+template <bool kGravity, bool kDrag, bool kKick>
+int gravity_drag_kick(int begin, int end, const VertexTail k, double& U_gravity, double& P_drag) {
+  double U = 0, P = 0;
+  int bad = 0;
+  for (int i = begin; i < end; ++i) {
+    const int sp = k.species[i];
+    const double m = k.mass[sp], c = k.drag[sp];
+    const __m128d v = _mm_loadu_pd(k.V + 2 * i);
+    const double vx = _mm_cvtsd_f64(v), vy = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
+    if (kGravity) U += m * k.g * k.X[2 * i + 1];
+    if (kDrag) P += -c * (vx * vx + vy * vy);
+    if (k.waits[i]) continue;
+    // the force as one 16-byte vector: two 8-byte stores read back as one would miss the
+    // store forwarding (measured: the sweep took a third of the step); x - 0 is x, so the
+    // force's x takes gravity's zero unchanged
+    __m128d f = _mm_loadu_pd(k.F + 2 * i);
+    if (kGravity) f = _mm_sub_pd(f, _mm_set_pd(m * k.g, 0.0));
+    if (kDrag) f = _mm_sub_pd(f, _mm_mul_pd(_mm_set1_pd(c), v));
+    _mm_storeu_pd(k.F + 2 * i, f);
+    if (kKick) {  // kick_one()'s operations, on the force in hand
+      const __m128d v_new = _mm_add_pd(v, _mm_mul_pd(_mm_set1_pd(k.half_dt * k.inv_m[i]), f));
+      _mm_storeu_pd(k.V + 2 * i, v_new);
+      const __m128d xv = _mm_add_pd(_mm_loadu_pd(k.X + 2 * i), v_new);
+      bad |= not_finite(_mm_cvtsd_f64(xv) + _mm_cvtsd_f64(_mm_unpackhi_pd(xv, xv)));
+    }
+  }
+  U_gravity = U;
+  P_drag = P;
+  return bad;
+}
+
+using TailSweep = int (*)(int, int, const VertexTail, double&, double&);
+template <bool G, bool D>
+TailSweep tail_sweep(bool kick) {
+  return kick ? &gravity_drag_kick<G, D, true> : &gravity_drag_kick<G, D, false>;
+}
+}  // namespace
+
+bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double half_dt) {
   // Each vertex takes the walls' force, then the corners' (edges near the orifice, few: in
-  // order, one thread), then gravity, then drag: the order of the terms one after another.
+  // order, one thread), then gravity, then drag: the order of the terms one after another. The
+  // walls go in a sweep of their own, then gravity, drag and the kick in one more; the few
+  // vertices a corner may touch (the ends of corner_edges_) take their gravity, drag and kick
+  // after the corners. The energies and powers are summed in vertex order either way (they do
+  // not depend on the force).
   const int n = s.size(), chunks = (n + kVerticesPerChunk - 1) / kVerticesPerChunk;
-  if (static_cast<int>(chunk_sums_.size()) < 3 * chunks) chunk_sums_.resize(3 * chunks);  // only when N grows
+  if (static_cast<int>(chunk_sums_.size()) < 3 * chunks) {  // only when N grows
+    chunk_sums_.resize(3 * chunks);
+    chunk_bad_.resize(chunks);
+  }
+  if (static_cast<int>(waits_for_corners_.size()) < n) waits_for_corners_.resize(n, 0);
+  std::uint8_t* waits = waits_for_corners_.data();
+  for (const int e : corner_edges_) waits[e] = waits[poly_.next[e]] = 1;
   double* sums = chunk_sums_.data();
+  int* bad = chunk_bad_.data();
   const ParticleState<2>& state = s;
   VecArray<2>& f = s.f;
-  const bool gravity = gravity_.g() != 0, drag = drag_.active();
+  const bool gravity = gravity_.g() != 0, drag = drag_.active(), kick = half_dt > 0;
   for_chunks(chunks, [&, sums](int c) {
     const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
     sums[c] = add_range(walls_, state, f, begin, end);
   });
-  for (int c = 0; c < chunks; ++c) r.U_wall += sums[c];
-  r.U_wall += corners_.accumulate_edges(s, s.f, corner_edges_).energy;
-  for_chunks(chunks, [&, sums](int c) {
+  const VertexTail tail{s.x.data()->data(), s.v.data()->data(), s.f.data()->data(), s.inv_mass.data(),
+                        s.species.data(), waits, {s.sp.mass[0], s.sp.mass[1]},
+                        {drag ? drag_.coefficient(0) : 0.0, drag ? drag_.coefficient(1) : 0.0}, gravity_.g(), half_dt};
+  const TailSweep sweep = gravity ? (drag ? tail_sweep<true, true>(kick) : tail_sweep<true, false>(kick))
+                                  : (drag ? tail_sweep<false, true>(kick) : tail_sweep<false, false>(kick));
+  for_chunks(chunks, [&, sums, bad, sweep](int c) {
     const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
-    sums[chunks + c] = gravity ? add_range(gravity_, state, f, begin, end) : 0.0;
-    sums[2 * chunks + c] = drag ? add_range(drag_, state, f, begin, end) : 0.0;
+    bad[c] = sweep(begin, end, tail, sums[chunks + c], sums[2 * chunks + c]);
   });
+  int not_finite_seen = 0;
+  for (int c = 0; c < chunks; ++c) {
+    r.U_wall += sums[c];
+    not_finite_seen |= bad[c];
+  }
+  r.U_wall += corners_.accumulate_edges(s, s.f, corner_edges_).energy;
+  for (const int e : corner_edges_) {
+    for (const int i : {e, poly_.next[e]}) {
+      if (!waits[i]) continue;  // the end of an earlier corner edge: done
+      waits[i] = 0;
+      if (gravity) gravity_.add_force(state, i, f[i]);
+      if (drag) drag_.add_force(state, i, f[i]);
+      if (kick) not_finite_seen |= not_finite(kick_one<2>(i, tail.X, tail.V, tail.F, half_dt, tail.inv_m));
+    }
+  }
   for (int c = 0; c < chunks; ++c) {
     r.U_gravity += sums[chunks + c];
     r.P_drag += sums[2 * chunks + c];
   }
+  return not_finite_seen == 0;
 }
 
 // One chunk of polygons of the shape pass. (Compiled also for AVX2 with target_clones it ran

@@ -34,6 +34,12 @@ class DpForceField {
 
   /// Zeroes s.f, brings the vertex list up to date and adds every term. O(vertices).
   ForceReport compute(ParticleState<2>& s);
+  /// compute(), then velocity Verlet's closing kick v += f dt / (2 m) (kick_one of
+  /// sp_sweeps.h), the kick taken in the same sweep as the last vertex terms (walls, gravity,
+  /// drag) instead of a sweep of its own: each vertex is kicked once its force is complete, so
+  /// the forces and velocities are the bits of compute() followed by kick()
+  /// (DpForces.ComputeAndKickEqualsComputeThenKick). finite: every position and velocity.
+  ForceReport compute_and_kick(ParticleState<2>& s, double dt, bool& finite);
   /// OpenMP threads for the evaluation: the shape terms by polygons, walls, gravity and drag
   /// by vertices, the smooth contact and the rough model's edge core by list rows (their force
   /// writes replayed in order); the rough disks and the fold pairs on one thread. Work
@@ -105,8 +111,12 @@ class DpForceField {
   /// body(chunk) for chunks 0 .. count-1 on threads_ threads (parallel_chunks.h).
   template <class Body>
   void for_chunks(int count, Body&& body) const { for_each_chunk(threads_, count, body); }
-  /// Walls, orifice corners, gravity and drag, vertex chunk by vertex chunk.
-  void add_vertex_terms(ParticleState<2>& s, ForceReport& r);
+  /// Everything before the vertex terms: the shape pass, the list, the contact.
+  ForceReport shape_list_and_contact(ParticleState<2>& s);
+  /// Walls, orifice corners, gravity and drag, vertex chunk by vertex chunk; with half_dt > 0
+  /// also the kick of each vertex once its force is complete (returns whether every position
+  /// and velocity is finite; without the kick: true).
+  bool add_vertex_terms(ParticleState<2>& s, ForceReport& r, double half_dt);
 
   const Hopper<2>& hopper_;
   FunnelCores cores_;             ///< the funnel walls' cores (thickness 0: unused)
@@ -119,6 +129,10 @@ class DpForceField {
   };
   std::vector<ShapeChunk> shape_chunks_;
   std::vector<double> chunk_sums_;  ///< per vertex chunk: energies or powers of one term
+  std::vector<int> chunk_bad_;      ///< per vertex chunk: a kicked position or velocity not finite
+  /// per vertex: 1 while an orifice corner may still add to its force (its gravity, drag and
+  /// kick wait for the corners); all 0 between evaluations
+  std::vector<std::uint8_t> waits_for_corners_;
   int threads_ = 1;
   bool edge_outgrown_ = false;    ///< set by shape_pass
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing

@@ -36,10 +36,12 @@ class Drag final : public ForceTerm<D> {
   }
   /// The drag on item i added to fi; returns its power -c |v|^2 (<= 0).
   double add_to(const ParticleState<D>& s, int i, Vec<D>& fi) const {
-    const double c = c_[s.species[i]];
-    fi -= c * s.v[i];
-    return -c * s.v[i].squaredNorm();
+    add_force(s, i, fi);
+    return power(s, i);
   }
+  /// add_to() in its two halves, for a sweep that adds the force later than it sums the power.
+  void add_force(const ParticleState<D>& s, int i, Vec<D>& fi) const { fi -= c_[s.species[i]] * s.v[i]; }
+  double power(const ParticleState<D>& s, int i) const { return -c_[s.species[i]] * s.v[i].squaredNorm(); }
 
  private:
   std::array<double, 2> c_;

@@ -21,10 +21,12 @@ class Gravity final : public ForceTerm<D> {
   }
   /// Gravity on item i added to fi; returns its energy M g h.
   double add_to(const ParticleState<D>& s, int i, Vec<D>& fi) const {
-    const double m = s.mass(i);
-    fi[kUp<D>] -= m * g_;
-    return m * g_ * s.x[i][kUp<D>];
+    add_force(s, i, fi);
+    return energy(s, i);
   }
+  /// add_to() in its two halves, for a sweep that adds the force later than it sums the energy.
+  void add_force(const ParticleState<D>& s, int i, Vec<D>& fi) const { fi[kUp<D>] -= s.mass(i) * g_; }
+  double energy(const ParticleState<D>& s, int i) const { return s.mass(i) * g_ * s.x[i][kUp<D>]; }
 
  private:
   double g_;

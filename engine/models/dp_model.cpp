@@ -63,11 +63,18 @@ void DpModel::start_flow(ParticleState<2>& bodies) {
 }
 
 StepReport DpModel::step(ParticleState<2>& bodies, double dt, StepHook<2>& hook) {
-  const StepReport r = velocity_verlet_step(dp_.verts(), dp_.forces(), dt, [&](ParticleState<2>&) {
-    dp_.sync_bodies(bodies);  // exits are counted when the centroid crosses the orifice
-    hook.between_drift_and_force(bodies, bodies_list_, true);
-  }, dp_.forces().threads());
-  bodies.step = dp_.verts().step;
+  // velocity_verlet_step() with its closing kick taken in the force field's last sweep
+  // (DpForceField::compute_and_kick): the same operations, the same bits
+  static const VecArray<2> kNoReference;
+  ParticleState<2>& verts = dp_.verts();
+  DpForceField& forces = dp_.forces();
+  drift(verts, dt, kNoReference, forces.threads());
+  dp_.sync_bodies(bodies);  // exits are counted when the centroid crosses the orifice
+  hook.between_drift_and_force(bodies, bodies_list_, true);
+  StepReport r;
+  r.forces = forces.compute_and_kick(verts, dt, r.finite);
+  ++verts.step;
+  bodies.step = verts.step;
   dp_.sync_bodies(bodies);
   return r;
 }

@@ -4,7 +4,11 @@
 // rigid-motion invariance and dissipation.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <memory>
+
 #include "dp_support.h"
+#include "engine/integrate/velocity_verlet.h"
 #include "engine/models/authors_dp_set.h"
 
 namespace beverloo {
@@ -559,6 +563,34 @@ TEST(DpForces, ShapeEnergiesAreInvariantUnderRigidMotionAndZeroForReferencePolyg
   EXPECT_NEAR(polygon_area(regular.poly, regular.verts.x, 1), regular.shape.a0[1], 1e-12);
 }
 
+/// The cluster, a polygon with an edge on the orifice's corner (the corner term acts), and
+/// polygon 0 folded back at vertex 1 (the fold pairs act), with random velocities.
+std::unique_ptr<DpFixture> corner_and_fold_fixture(const char* model) {
+  SimConfig c = dp_config(model, int(cluster().size()) + 1, 0.4, 1.5);
+  use_authors_dp_set(c);
+  c.resolve_and_validate();
+  std::vector<Vec<2>> centres = cluster();
+  centres.push_back({1.5, 0.6});  // moved onto the orifice corner below
+  auto made = std::make_unique<DpFixture>(c, centres, 0.2, 17);
+  DpFixture& fx = *made;
+  const int m = fx.poly.polygons() - 1, a = fx.poly.first[m], b = fx.poly.next[a];
+  const Vec<2> e = fx.verts.x[b] - fx.verts.x[a];
+  const Vec<2> outward = Vec<2>(e[1], -e[0]).normalized();
+  const Vec<2> shift = Vec<2>(0.5 * c.w, 0) - 0.5 * (fx.verts.x[a] + fx.verts.x[b]) - 0.02 * fx.shape.l0[1] * outward;
+  for (int i = fx.poly.first[m]; i < fx.poly.first[m + 1]; ++i) fx.verts.x[i] += shift;
+  // polygon 0 folded back at vertex 1: vertex 2 lies beside edge 0 -> 1, 0.05 l0 off its line
+  // and inside its slab, so the fold pairs at vertex 1 act
+  {
+    const int v0 = fx.poly.first[0], v1 = v0 + 1, v2 = v0 + 2;
+    const Vec<2> e = fx.verts.x[v1] - fx.verts.x[v0];
+    const Vec<2> inward = Vec<2>(-e[1], e[0]).normalized();
+    fx.verts.x[v2] = fx.verts.x[v0] + 0.6 * e + 0.05 * fx.shape.l0[0] * inward;
+  }
+  Rng rng(5);
+  for (auto& v : fx.verts.v) v = Vec<2>(rng.uniform(-1, 1), rng.uniform(-1, 1));
+  return made;
+}
+
 // DpForceField::compute runs the shape terms polygon by polygon over edges measured once, the
 // orifice corners only on the edges near them and the smooth contact's fold pairs only at the
 // vertices where a polygon folds (found in the same pass); each vertex must still sum the same numbers
@@ -566,27 +598,8 @@ TEST(DpForces, ShapeEnergiesAreInvariantUnderRigidMotionAndZeroForReferencePolyg
 // for bit (the results of every DP job rest on this).
 TEST(DpForces, FusedShapePassEqualsTheTermsOneAfterAnother) {
   for (const char* model : {"dp_smooth", "dp_rough"}) {
-    SimConfig c = dp_config(model, int(cluster().size()) + 1, 0.4, 1.5);
-    use_authors_dp_set(c);
-    c.resolve_and_validate();
-    std::vector<Vec<2>> centres = cluster();
-    centres.push_back({1.5, 0.6});  // moved onto the orifice corner below
-    DpFixture fx(c, centres, 0.2, 17);
-    const int m = fx.poly.polygons() - 1, a = fx.poly.first[m], b = fx.poly.next[a];
-    const Vec<2> e = fx.verts.x[b] - fx.verts.x[a];
-    const Vec<2> outward = Vec<2>(e[1], -e[0]).normalized();
-    const Vec<2> shift = Vec<2>(0.5 * c.w, 0) - 0.5 * (fx.verts.x[a] + fx.verts.x[b]) - 0.02 * fx.shape.l0[1] * outward;
-    for (int i = fx.poly.first[m]; i < fx.poly.first[m + 1]; ++i) fx.verts.x[i] += shift;
-    // polygon 0 folded back at vertex 1: vertex 2 lies beside edge 0 -> 1, 0.05 l0 off its line
-    // and inside its slab, so the fold pairs at vertex 1 act
-    {
-      const int v0 = fx.poly.first[0], v1 = v0 + 1, v2 = v0 + 2;
-      const Vec<2> e = fx.verts.x[v1] - fx.verts.x[v0];
-      const Vec<2> inward = Vec<2>(-e[1], e[0]).normalized();
-      fx.verts.x[v2] = fx.verts.x[v0] + 0.6 * e + 0.05 * fx.shape.l0[0] * inward;
-    }
-    Rng rng(5);
-    for (auto& v : fx.verts.v) v = Vec<2>(rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const std::unique_ptr<DpFixture> made = corner_and_fold_fixture(model);
+    DpFixture& fx = *made;
     const Hopper<2> h = make_hopper<2>(fx.c);
     DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
     ParticleState<2> fused = fx.verts;
@@ -607,6 +620,51 @@ TEST(DpForces, FusedShapePassEqualsTheTermsOneAfterAnother) {
     }
     EXPECT_EQ(r.U_shape, energy[0] + energy[1] + energy[2]) << model;
     EXPECT_EQ(r.U_wall, energy[4] + energy[7]) << model;
+  }
+}
+
+// DpModel::step takes velocity Verlet's closing kick in the force field's last sweep
+// (compute_and_kick): the vertices an orifice corner touches wait for the corners. Forces,
+// velocities and energies must be the bits of compute() followed by kick(), with gravity and
+// drag on, at one thread and at two.
+TEST(DpForces, ComputeAndKickEqualsComputeThenKick) {
+  for (const char* model : {"dp_smooth", "dp_rough"}) {
+    for (const int threads : {1, 2}) {
+      const std::unique_ptr<DpFixture> made = corner_and_fold_fixture(model);
+      DpFixture& fx = *made;
+      ASSERT_GT(fx.c.drag_rate + fx.c.zeta, 0) << "drag must act in this test";
+      const Hopper<2> h = make_hopper<2>(fx.c);
+      const double dt = 1e-3;
+      DpForceField apart_ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c), fused_ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+      apart_ff.set_threads(threads);
+      fused_ff.set_threads(threads);
+      ParticleState<2> apart = fx.verts, fused = fx.verts;
+      const ForceReport ra = apart_ff.compute(apart);
+      const bool finite_apart = kick(apart, dt, threads);
+      bool finite_fused = false;
+      const ForceReport rf = fused_ff.compute_and_kick(fused, dt, finite_fused);
+      EXPECT_TRUE(finite_apart);
+      EXPECT_TRUE(finite_fused);
+      EXPECT_GT(ra.U_wall, 0) << model << ": the walls and corners must act in this test";
+      for (int i = 0; i < fx.verts.size(); ++i) {
+        ASSERT_EQ(apart.f[i][0], fused.f[i][0]) << model << " vertex " << i;
+        ASSERT_EQ(apart.f[i][1], fused.f[i][1]) << model << " vertex " << i;
+        ASSERT_EQ(apart.v[i][0], fused.v[i][0]) << model << " vertex " << i;
+        ASSERT_EQ(apart.v[i][1], fused.v[i][1]) << model << " vertex " << i;
+      }
+      EXPECT_EQ(ra.U_shape, rf.U_shape);
+      EXPECT_EQ(ra.U_contact, rf.U_contact);
+      EXPECT_EQ(ra.U_wall, rf.U_wall);
+      EXPECT_EQ(ra.U_gravity, rf.U_gravity);
+      EXPECT_EQ(ra.P_drag, rf.P_drag);
+      EXPECT_EQ(ra.P_friction, rf.P_friction);
+      // a velocity made infinite is reported
+      ParticleState<2> bad = fx.verts;
+      bad.v[3][0] = INFINITY;
+      bool finite_bad = true;
+      fused_ff.compute_and_kick(bad, dt, finite_bad);
+      EXPECT_FALSE(finite_bad) << model;
+    }
   }
 }
 

@@ -305,6 +305,14 @@ double dissipation_scale(const SimConfig& c) {
   if (z > 0 && m > 0) return std::sqrt(z * m);
   return z + m;
 }
+ZetaMu on_lambda_axis(double lambda, double scale) {
+  const double zeta_ref = scale / std::sqrt(10.0);
+  if (lambda == 0) return {0.0, scale * 10 * std::sqrt(10.0)};
+  if (std::isinf(lambda)) return {zeta_ref, 0.0};
+  return {zeta_ref, zeta_ref / lambda};
+}
+double axis_scale_of_zeta(double zeta) { return zeta * std::sqrt(10.0); }
+double axis_scale_of_friction_limit(double mu) { return mu / (10 * std::sqrt(10.0)); }
 }  // namespace derived
 
 std::string parameters_markdown() {

@@ -102,6 +102,18 @@ double friction_coefficient(const SimConfig& c);
 std::optional<double> lambda(const SimConfig& c);
 /// The dissipation scale sqrt(zeta_eff mu_t) when both are > 0, else the nonzero one (or 0).
 double dissipation_scale(const SimConfig& c);
+
+/// The sweeps' lambda axis at a dissipation scale s (docs/sweeps.md), defined here once: the
+/// text's reference values are zeta = s / sqrt 10 and mu = 10 s sqrt 10 (physics.md), so a
+/// finite lambda > 0 is zeta = s / sqrt 10, mu = zeta / lambda; lambda = 0 is zeta = 0,
+/// mu = 10 s sqrt 10; lambda = +inf is zeta = s / sqrt 10, mu = 0.
+struct ZetaMu {
+  double zeta, mu;
+};
+ZetaMu on_lambda_axis(double lambda, double scale);
+/// The scale s of a job on that axis from its zeta (> 0), or from its mu when zeta = 0 (lambda = 0).
+double axis_scale_of_zeta(double zeta);
+double axis_scale_of_friction_limit(double mu);
 }  // namespace derived
 
 /// The parameter tables of docs/job-file.md, generated from the table (Markdown).

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/digest.h"
+#include "engine/parameters.h"
 #include "series_labels.h"
 
 namespace beverloo {
@@ -53,10 +54,10 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
   }
   for (auto& [gkey, g] : groups) {
     const std::string zeta_part = gkey.substr(gkey.find("|zeta=") + 6);
-    const double scale = std::stod(zeta_part.substr(0, zeta_part.find('|'))) * std::sqrt(10.0);
-    for (const Series& s : series)  // lambda = 0 at the same dissipation scale (mu = 10 sqrt 10 s)
+    const double scale = derived::axis_scale_of_zeta(std::stod(zeta_part.substr(0, zeta_part.find('|'))));
+    for (const Series& s : series)  // lambda = 0 at the same dissipation scale
       if (s.zeta == 0 && s.base_key == gkey.substr(0, gkey.find('|')) &&
-          std::fabs(s.mu / (10 * std::sqrt(10.0)) - scale) <= 1e-9 * scale)
+          std::fabs(derived::axis_scale_of_friction_limit(s.mu) - scale) <= 1e-9 * scale)
         g.limit0 = &s;
     fit_group(g);
     out.push_back(g);

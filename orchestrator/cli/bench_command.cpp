@@ -13,6 +13,7 @@
 #include "engine/json_file.h"
 #include "engine/models/authors_dp_set.h"
 #include "engine/models/model_time_step.h"
+#include "engine/parameters.h"
 #include "engine/protocol/hopper_run.h"
 #include "commands.h"
 #include "guarded.h"
@@ -46,7 +47,8 @@ std::vector<BenchCase> standard_cases(double scale, double skin) {
     c.resolve_and_validate();
     return c;
   };
-  const double mu_f = 10 * std::sqrt(10.0), zeta_d = 1 / std::sqrt(10.0);
+  // the lambda axis's limits at scale 1: mu = 10 sqrt 10, zeta = 1 / sqrt 10
+  const double mu_f = derived::on_lambda_axis(0, 1).mu, zeta_d = derived::on_lambda_axis(INFINITY, 1).zeta;
   auto dp = [&](const std::string& model) {
     SimConfig c;
     c.model = model;

@@ -421,17 +421,9 @@ std::vector<JobSpec> Sweep::expand() const {
       if (!sets_zeta && !sets_mu) {
         const double s = spec.dissipation_scale.value_or(1.0);
         if (s <= 0) throw SweepError(p["dissipation_scale"].path, "dissipation_scale must be > 0");
-        const double zeta_ref = s / std::sqrt(10.0);
-        if (lambda == 0) {
-          job["zeta"] = 0.0;
-          job["mu"] = s * 10 * std::sqrt(10.0);
-        } else if (std::isinf(lambda)) {
-          job["zeta"] = zeta_ref;
-          job["mu"] = 0.0;
-        } else {
-          job["zeta"] = zeta_ref;
-          job["mu"] = zeta_ref / lambda;
-        }
+        const derived::ZetaMu d = derived::on_lambda_axis(lambda, s);
+        job["zeta"] = d.zeta;
+        job["mu"] = d.mu;
       }
     }
     try {

@@ -14,7 +14,8 @@
 ///    "where":   ["expression", ...]   (a point is kept where every expression is nonzero),
 ///    "replicas": n}
 ///
-/// lambda = zeta/mu with the default parametrisation of physics.md 8 (dissipation_scale s = 1):
+/// lambda = zeta/mu with the default parametrisation of physics.md 8 (dissipation_scale s = 1;
+/// derived::on_lambda_axis in engine/parameters.h, the one definition):
 /// finite lambda > 0: zeta = s/sqrt(10), mu = zeta/lambda; lambda = 0: zeta = 0, mu = 10 s sqrt(10);
 /// lambda = "inf": mu = 0, zeta = s/sqrt(10). A sweep that sets zeta or mu itself (an axis or a
 /// derived expression) keeps them: lambda is then only a label.

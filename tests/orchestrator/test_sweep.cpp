@@ -85,6 +85,13 @@ TEST(Sweep, LambdaLimitsAndDissipationScaleFollowPhysicsSpec) {
   EXPECT_DOUBLE_EQ(jobs[4].config.zeta, 10 * z);                // scale 10 multiplies both
   EXPECT_DOUBLE_EQ(jobs[4].config.mu, 10 * z / 0.01);
   EXPECT_TRUE(std::isinf(*jobs[2].lambda));
+  // the crossover fits find a group's scale back from its zeta, and its lambda = 0 limit's
+  // from mu (reports/crossover_groups.cpp): the inverse of the axis at every scale
+  for (const double scale : {0.1, 1.0, 10.0}) {
+    EXPECT_NEAR(derived::axis_scale_of_zeta(derived::on_lambda_axis(0.01, scale).zeta), scale, 1e-14 * scale);
+    EXPECT_NEAR(derived::axis_scale_of_friction_limit(derived::on_lambda_axis(0, scale).mu), scale, 1e-14 * scale);
+    EXPECT_EQ(derived::on_lambda_axis(INFINITY, scale).mu, 0);
+  }
 }
 
 TEST(Sweep, EveryJobsLambdaIsTheDefinitionOfItsOwnParameters) {

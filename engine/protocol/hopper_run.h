@@ -27,33 +27,9 @@
 #include "pile_finder.h"
 #include "reinjector.h"
 #include "run_result.h"
+#include "run_hopper.h"
 
 namespace beverloo {
-
-enum class ProgressMode { Auto, Terminal, Log, Quiet };
-
-struct RunOptions {
-  std::string output_dir;  ///< where checkpoint.h5, result.h5, summary.json go; empty: nowhere
-  bool resume = false;     ///< continue from output_dir/checkpoint.h5 if it exists
-  ProgressMode progress = ProgressMode::Quiet;
-  /// Set asynchronously (signal handler): checkpoint at the end of the current step and stop.
-  const std::atomic<bool>* stop_request = nullptr;
-  /// If set, receives the current step now and then (a few times per simulated time unit), so that
-  /// another thread can report progress (the worker's heartbeat file) without touching the run.
-  std::atomic<std::int64_t>* progress_step = nullptr;
-  /// Also checkpoint whenever this many wall seconds have passed since the last checkpoint (0:
-  /// never). run.checkpoint_interval counts simulated time, which for stiff DP runs can be
-  /// hours of wall time; a checkpoint at any step resumes bit-identically, so this changes no
-  /// result, only how much work a SIGKILL or a lost node can cost.
-  double checkpoint_wall_seconds = 600;
-  /// Threads for the run's steps (SP: the force blocks and the integrator's loops; DP: none
-  /// yet). Every count gives the same result, bit for bit: the forces are summed in an order
-  /// that the particle count alone fixes (neighbor_list.h, blocks).
-  int threads = 1;
-  /// With threads > 1: use 1 thread instead while that runs the steps faster (a node whose
-  /// other cores are busy; thread_governor.h). Off: always `threads` (bench, to time them).
-  bool adapt_threads = true;
-};
 
 template <int D>
 class HopperRun : private StepHook<D> {
@@ -144,8 +120,5 @@ class HopperRun : private StepHook<D> {
   struct Trajectory;
   std::unique_ptr<Trajectory> traj_;
 };
-
-/// Runs one job of either dimension (dispatch on c.dimension).
-RunResult run_hopper(const SimConfig& c, const RunOptions& options);
 
 }  // namespace beverloo

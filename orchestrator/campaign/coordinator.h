@@ -9,7 +9,7 @@
 
 #include "campaign_dir.h"
 #include "planner.h"
-#include "engine/protocol/hopper_run.h"
+#include "engine/protocol/run_hopper.h"
 #include "orchestrator/slurm/slurm_options.h"
 
 namespace beverloo {

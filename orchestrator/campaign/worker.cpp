@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "engine/io/job_output.h"
-#include "engine/protocol/hopper_run.h"
+#include "engine/protocol/run_hopper.h"
 #include "job_files.h"
 #include "core/cpus.h"
 #include "core/failures.h"

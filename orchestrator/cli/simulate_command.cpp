@@ -13,7 +13,7 @@
 #include "engine/protocol/memory_estimate.h"
 #include "engine/io/job_output.h"
 #include "engine/json_file.h"
-#include "engine/protocol/hopper_run.h"
+#include "engine/protocol/run_hopper.h"
 #include "core/failures.h"
 #include "core/stop_signal.h"
 #include "core/text_escape.h"

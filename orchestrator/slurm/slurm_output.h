@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "orchestrator/campaign/store.h"
+#include "core/failures.h"
 
 namespace beverloo::slurm {
 

@@ -108,15 +108,20 @@ ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s) {
 }
 
 ForceReport DpForceField::compute(ParticleState<2>& s) {
+  energies_ = true;
   ForceReport r = shape_list_and_contact(s);
   add_vertex_terms(s, r, 0.0);
   return r;
 }
 
 ForceReport DpForceField::compute_and_kick(ParticleState<2>& s, double dt, bool& finite) {
+  energies_ = false;
   ForceReport r = shape_list_and_contact(s);
   finite = add_vertex_terms(s, r, 0.5 * dt);
-  return r;
+  energies_ = true;
+  ForceReport out;  // the forces' by-products only: no energies, no powers
+  out.max_overlap = r.max_overlap;
+  return out;
 }
 
 namespace {
@@ -182,7 +187,7 @@ struct VertexTail {
 // a vertex waits for the corners, gravity's force -m g e_y, drag's -c v and the kick
 // v += f dt / (2 m): Gravity::add_to's and Drag::add_to's operations, then kick_one's. Returns
 // whether a kicked position or velocity is not finite.
-template <bool kGravity, bool kDrag, bool kKick>
+template <bool kGravity, bool kDrag, bool kKick, bool kEnergy>
 int gravity_drag_kick(int begin, int end, const VertexTail k, double& U_gravity, double& P_drag) {
   double U = 0, P = 0;
   int bad = 0;
@@ -191,8 +196,8 @@ int gravity_drag_kick(int begin, int end, const VertexTail k, double& U_gravity,
     const double m = k.mass[sp], c = k.drag[sp];
     const __m128d v = _mm_loadu_pd(k.V + 2 * i);
     const double vx = _mm_cvtsd_f64(v), vy = _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
-    if (kGravity) U += m * k.g * k.X[2 * i + 1];
-    if (kDrag) P += -c * (vx * vx + vy * vy);
+    if (kGravity && kEnergy) U += m * k.g * k.X[2 * i + 1];
+    if (kDrag && kEnergy) P += -c * (vx * vx + vy * vy);
     if (k.waits[i]) continue;
     // the force as one 16-byte vector: two 8-byte stores read back as one would miss the
     // store forwarding (measured: the sweep took a third of the step); x - 0 is x, so the
@@ -215,8 +220,9 @@ int gravity_drag_kick(int begin, int end, const VertexTail k, double& U_gravity,
 
 using TailSweep = int (*)(int, int, const VertexTail, double&, double&);
 template <bool G, bool D>
-TailSweep tail_sweep(bool kick) {
-  return kick ? &gravity_drag_kick<G, D, true> : &gravity_drag_kick<G, D, false>;
+TailSweep tail_sweep(bool kick, bool energy) {
+  if (energy) return kick ? &gravity_drag_kick<G, D, true, true> : &gravity_drag_kick<G, D, false, true>;
+  return kick ? &gravity_drag_kick<G, D, true, false> : &gravity_drag_kick<G, D, false, false>;
 }
 }  // namespace
 
@@ -242,13 +248,19 @@ bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double 
   const bool gravity = gravity_.g() != 0, drag = drag_.active(), kick = half_dt > 0;
   for_chunks(chunks, [&, sums](int c) {
     const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
-    sums[c] = add_range(walls_, state, f, begin, end);
+    if (energies_) {
+      sums[c] = add_range(walls_, state, f, begin, end);
+    } else {  // no running sum: most vertices have no wall in reach and cost one test
+      for (int i = begin; i < end; ++i) (void)walls_.add_to(state, i, f[i]);
+      sums[c] = 0;
+    }
   });
   const VertexTail tail{s.x.data()->data(), s.v.data()->data(), s.f.data()->data(), s.inv_mass.data(),
                         s.species.data(), waits, {s.sp.mass[0], s.sp.mass[1]},
                         {drag ? drag_.coefficient(0) : 0.0, drag ? drag_.coefficient(1) : 0.0}, gravity_.g(), half_dt};
-  const TailSweep sweep = gravity ? (drag ? tail_sweep<true, true>(kick) : tail_sweep<true, false>(kick))
-                                  : (drag ? tail_sweep<false, true>(kick) : tail_sweep<false, false>(kick));
+  const bool e = energies_;
+  const TailSweep sweep = gravity ? (drag ? tail_sweep<true, true>(kick, e) : tail_sweep<true, false>(kick, e))
+                                  : (drag ? tail_sweep<false, true>(kick, e) : tail_sweep<false, false>(kick, e));
   for_chunks(chunks, [&, sums, bad, sweep](int c) {
     const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
     bad[c] = sweep(begin, end, tail, sums[chunks + c], sums[2 * chunks + c]);
@@ -292,8 +304,10 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
     segments_.edge_forces(edges);
     if (bending_.active()) bending_.edge_gradients(edges);
     write_shape_forces(edges, bending_.active(), s.f);
-    for (int k = 0; k < edges.count; ++k) U_length += edges.seg_u[k];
-    for (int k = 0; bending_.active() && k < edges.count; ++k) U_bending += edges.bend_u[k];
+    if (energies_) {
+      for (int k = 0; k < edges.count; ++k) U_length += edges.seg_u[k];
+      for (int k = 0; bending_.active() && k < edges.count; ++k) U_bending += edges.bend_u[k];
+    }
     const int n = edges.count;
     double perimeter = 0;
     for (int k = 0; k < n; ++k) {

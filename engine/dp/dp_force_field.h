@@ -38,7 +38,10 @@ class DpForceField {
   /// sp_sweeps.h), the kick taken in the same sweep as the last vertex terms (walls, gravity,
   /// drag) instead of a sweep of its own: each vertex is kicked once its force is complete, so
   /// the forces and velocities are the bits of compute() followed by kick()
-  /// (DpForces.ComputeAndKickEqualsComputeThenKick). finite: every position and velocity.
+  /// (DpForces.ComputeAndKickEqualsComputeThenKick). finite: every position and velocity. The
+  /// report holds max_overlap and no energies or powers (as SP's fused step): their running sums
+  /// are chains of dependent adds through every vertex, and a flow step needs none of them
+  /// (compute() has them, for the same forces).
   ForceReport compute_and_kick(ParticleState<2>& s, double dt, bool& finite);
   /// OpenMP threads for the evaluation: the shape terms by polygons, walls, gravity and drag
   /// by vertices, the smooth contact and the rough model's edge core by list rows (their force
@@ -135,6 +138,7 @@ class DpForceField {
   std::vector<std::uint8_t> waits_for_corners_;
   int threads_ = 1;
   bool edge_outgrown_ = false;    ///< set by shape_pass
+  bool energies_ = true;          ///< this evaluation sums energies and powers (compute(): yes)
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing
   std::vector<int> fold_vertices_; ///< vertices at which the fold pairs (smooth contact, rough fold barrier) may act, increasing
 };

@@ -251,7 +251,8 @@ bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double 
     if (energies_) {
       sums[c] = add_range(walls_, state, f, begin, end);
     } else {  // no running sum: most vertices have no wall in reach and cost one test
-      for (int i = begin; i < end; ++i) (void)walls_.add_to(state, i, f[i]);
+      for (int i = begin; i < end; ++i)
+        if (list_.wall_mask(i)) (void)walls_.add_to(state, i, f[i]);
       sums[c] = 0;
     }
   });
@@ -309,17 +310,39 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
       for (int k = 0; bending_.active() && k < edges.count; ++k) U_bending += edges.bend_u[k];
     }
     const int n = edges.count;
-    double perimeter = 0;
-    for (int k = 0; k < n; ++k) {
-      const int i = edges.first + k;
-      outgrown = outgrown || edges.sq[k] > edge_bound_[i] * edge_bound_[i];
-      perimeter += edges.len[k];
-      longest = edges.len[k] > longest ? edges.len[k] : longest;
+    // Straight loops without an order-dependent sum (vectorised): the perimeter is only a bound
+    // for the corner test below, so its order of summation is free; the longest edge is a
+    // maximum (any order, the same value); an edge outgrew its bound: an or.
+    double perimeter = 0, polygon_longest = 0;
+    int grown = 0;
+    {
+      const double* __restrict sq = edges.sq;
+      const double* __restrict len = edges.len;
+      const double* __restrict bound = edge_bound_.data() + edges.first;
+      #pragma omp simd reduction(+ : perimeter) reduction(max : polygon_longest) reduction(| : grown)
+      for (int k = 0; k < n; ++k) {
+        grown |= sq[k] > bound[k] * bound[k];
+        perimeter += len[k];
+        polygon_longest = len[k] > polygon_longest ? len[k] : polygon_longest;
+      }
     }
+    outgrown = outgrown || grown;
+    longest = polygon_longest > longest ? polygon_longest : longest;
     // the fold pairs (of the smooth contact, or the rough model's fold barrier) act only where
-    // the polygon folds (at rest: nowhere)
+    // the polygon folds (at rest: nowhere): one vectorised test for the polygon (vertex k's
+    // edges are k - 1 and k; edge -1 is the last), then vertex by vertex where it says so
     const DpSmoothContact* folds = smooth_ ? smooth_.get() : rough_fold_.get();
-    for (int k = 0; k < n; ++k) {
+    int may_fold = 0;
+    if (folds->has_folds()) {
+      const double w2 = folds->fold_width2(edges.species);
+      const double* __restrict ex = edges.ex;
+      const double* __restrict ey = edges.ey;
+      const double* __restrict sq = edges.sq;
+      #pragma omp simd reduction(| : may_fold)
+      for (int k = 0; k < n; ++k)  // fold_may_act()'s test, & for && (no branch; the same for NaN)
+        may_fold |= !((ex[k - 1] * ex[k] + ey[k - 1] * ey[k] > 0) & (sq[k - 1] >= w2) & (sq[k] >= w2));
+    }
+    for (int k = 0; may_fold && k < n; ++k) {
       const int i = edges.first + k, in = poly_.prev[i] - edges.first;
       if (folds->fold_may_act(edges.dot(in, k), edges.sq[in], edges.sq[k], edges.species))
         ch.fold_vertices.push_back(i);  // grows to its largest once, then no allocation

@@ -31,7 +31,7 @@ class PolygonEdges {
   PolygonEdges& operator=(const PolygonEdges&) { return *this; }
 
   // Every pointer below indexes k = 0 .. count-1; x, y, ux and uy also k = -1 and k = count
-  // (the cyclic neighbours), where the producer wrote them.
+  // (the cyclic neighbours), ex, ey and sq also k = -1, where the producer wrote them.
   double* x = nullptr;   ///< positions
   double* y = nullptr;
   double* ex = nullptr;  ///< edge vectors r_next(k) - r_k
@@ -80,6 +80,9 @@ class PolygonEdges {
       q[k] = dx[k] * dx[k] + dy[k] * dy[k];
       l[k] = std::sqrt(q[k]);
     }
+    dx[-1] = dx[n - 1];  // edge -1 is the last: the edge into vertex 0
+    dy[-1] = dy[n - 1];
+    q[-1] = q[n - 1];
   }
   /// e_a . e_b (Eigen's dot()).
   double dot(int a, int b) const { return ex[a] * ex[b] + ey[a] * ey[b]; }

@@ -111,6 +111,9 @@ class DpSmoothContact final : public ForceTerm<2> {
   bool fold_may_act(double in_dot_out, double sq_in, double sq_out, int species) const {
     return folds_ && !(in_dot_out > 0 && sq_in >= width2_[species] && sq_out >= width2_[species]);
   }
+  /// fold_may_act()'s two constants, for a loop that tests a whole polygon at once.
+  bool has_folds() const { return folds_; }
+  double fold_width2(int species) const { return width2_[species]; }
   /// OpenMP threads for the pairs: rows in fixed chunks (kRowsPerChunk vertices), each chunk's
   /// force writes logged and replayed in chunk order, so every count gives the same bits.
   void set_threads(int threads) { threads_ = threads < 1 ? 1 : threads; }

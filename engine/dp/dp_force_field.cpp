@@ -5,6 +5,7 @@
 
 #include <emmintrin.h>
 
+#include "../forces/sp_pairs_avx2.h"  // avx2::available()
 #include "../integrate/sp_sweeps.h"
 
 namespace beverloo {
@@ -60,6 +61,15 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   list_.set_extra_reach(&vertex_reach_);
   corner_edges_.reserve(p.vertices());
   fold_vertices_.reserve(p.vertices());
+  for (int k = 0; k < 2; ++k) {
+    lane_constants_.a0[k] = shape.a0[k];
+    lane_constants_.K_a[k] = area_.stiffness(k);
+    lane_constants_.K_l[k] = segments_.stiffness(k);
+    lane_constants_.l0[k] = shape.l0[k];
+    lane_constants_.bend_c[k] = bending_.edge_constant(k);
+  }
+  lane_constants_.bending = bending_.active();
+  lanes_ = avx2::available();
   // a wall contact wider than the pair contact (dp.wall_width): the wall masks reach as far
   if (c.dp.wall_width) list_.set_wall_diameters({shape.wall[0], shape.wall[1]});
   if (shape.wall_thickness > 0) {
@@ -77,6 +87,8 @@ void DpForceField::topology_changed() {
   vertex_reach_.assign(poly_.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape_.l0[1] - reach_covered_));
   list_.invalidate();
 }
+
+void DpForceField::set_shape_lanes(bool on) { lanes_ = on && avx2::available(); }
 
 void DpForceField::set_threads(int threads) {
   threads_ = threads < 1 ? 1 : threads;
@@ -300,6 +312,15 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
   double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
   bool outgrown = false;
   for (int m = c * kPolygonsPerChunk, end = std::min(np, (c + 1) * kPolygonsPerChunk); m < end; ++m) {
+    if (lanes_ && m + 4 <= end) {  // four polygons at once, in polygon order for every sum and list
+      double sums[3] = {U_area, U_length, U_bending};
+      shape_four(s, m, ch, sums, longest, outgrown);
+      U_area = sums[0];
+      U_length = sums[1];
+      U_bending = sums[2];
+      m += 3;
+      continue;
+    }
     edges.measure(poly_, s, m);
     U_area += area_.vertex_forces(edges);
     segments_.edge_forces(edges);
@@ -357,6 +378,39 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
   ch.U_bending = U_bending;
   ch.longest = longest;
   ch.outgrown = outgrown;
+}
+
+void DpForceField::shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, double sums[3], double& longest,
+                              bool& outgrown) {
+  int first[4], sp[4];
+  const int n = poly_.first[m + 1] - poly_.first[m];
+  for (int j = 0; j < 4; ++j) {
+    first[j] = poly_.first[m + j];
+    sp[j] = s.species[first[j]];
+  }
+  const DpSmoothContact* folds = smooth_ ? smooth_.get() : rough_fold_.get();
+  const double fold_w2[2] = {folds->fold_width2(0), folds->fold_width2(1)};
+  avx2::ShapeLanes& L = ch.lanes;
+  L.run(s.x.data()->data(), s.f.data()->data(), first, sp, n, lane_constants_, edge_bound_.data(), folds->has_folds(),
+        fold_w2);
+  outgrown = outgrown || L.grown;
+  longest = L.longest > longest ? L.longest : longest;
+  const double* sq = L.sq();
+  for (int j = 0; j < 4; ++j) {  // polygon m + j: what the one-polygon path does after its forces
+    if (energies_) {
+      sums[0] += L.U_area[j];
+      for (int k = 0; k < n; ++k) sums[1] += L.seg_u()[4 * k + j];
+      for (int k = 0; lane_constants_.bending && k < n; ++k) sums[2] += L.bend_u()[4 * k + j];
+    }
+    for (int k = 0; (L.may_fold >> j & 1) && k < n; ++k) {
+      const int in = k == 0 ? n - 1 : k - 1;  // polygons are contiguous and cyclic
+      const double dot = L.ex()[4 * in + j] * L.ex()[4 * k + j] + L.ey()[4 * in + j] * L.ey()[4 * k + j];
+      if (folds->fold_may_act(dot, sq[4 * in + j], sq[4 * k + j], sp[j])) ch.fold_vertices.push_back(first[j] + k);
+    }
+    if (!corners_.polygon_may_touch(s, first[j], L.perimeter[j])) continue;
+    for (int k = 0; k < n; ++k)
+      if (corners_.may_touch(s, first[j] + k, sq[4 * k + j])) ch.corner_edges.push_back(first[j] + k);
+  }
 }
 
 double DpForceField::shape_pass(ParticleState<2>& s) {

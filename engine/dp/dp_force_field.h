@@ -22,6 +22,7 @@
 #include "../forces/parallel_chunks.h"
 #include "../forces/sp_contact.h"
 #include "../geometry/funnel_cores.h"
+#include "dp_shape_lanes_avx2.h"
 #include "polygons.h"
 
 namespace beverloo {
@@ -49,6 +50,10 @@ class DpForceField {
   /// is cut into fixed chunks whatever the count and every sum is taken chunk by chunk in
   /// chunk order, so every count gives the same forces and energies, bit for bit.
   void set_threads(int threads);
+  /// The shape pass four polygons at a time in AVX2 lanes (the default where the processor has
+  /// AVX2) or one at a time: the same bits either way (tests compare them).
+  void set_shape_lanes(bool on);
+  bool shape_lanes() const { return lanes_; }
   int threads() const { return threads_; }
   static constexpr int kPolygonsPerChunk = 64;
   static constexpr int kVerticesPerChunk = 1024;
@@ -91,6 +96,11 @@ class DpForceField {
   double shape_pass(ParticleState<2>& s);
   /// shape_pass()'s work on polygon chunk c: its forces, and its results into shape_chunks_[c].
   void shape_chunk(ParticleState<2>& s, int c);
+  struct ShapeChunk;
+  /// The same for polygons m .. m + 3 at once in AVX2 lanes (avx2::ShapeLanes), the same bits.
+  void shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, double sums[3], double& longest, bool& outgrown);
+  avx2::ShapeConstants lane_constants_;  ///< set at construction
+  bool lanes_ = false;                   ///< the shape pass runs four polygons at once (AVX2 here)
   /// Every edge's bound set again from its length, and the list invalidated (an edge outgrew its bound).
   void reset_edge_bounds(const ParticleState<2>& s);
 
@@ -126,6 +136,7 @@ class DpForceField {
   /// One chunk of kPolygonsPerChunk polygons in the shape pass: its scratch and its results.
   struct ShapeChunk {
     PolygonEdges edges;
+    avx2::ShapeLanes lanes;  ///< four polygons at once (AVX2), the same bits
     double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
     bool outgrown = false;
     std::vector<int> corner_edges, fold_vertices;

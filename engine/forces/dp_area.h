@@ -15,6 +15,8 @@ class DpArea final : public ForceTerm<2> {
   /// K_a per species (small, large): a polygon's stiffness is its species'
   DpArea(const PolygonSet& p, const DpShape& shape, std::array<double, 2> K_a) : p_(p), shape_(shape), k_{K_a[0], K_a[1]} {}
   std::string_view name() const override { return "dp_area"; }
+  /// K_a of a species (the lane kernel reads the constants it uses)
+  double stiffness(int species) const { return k_[species]; }
   TermOutput accumulate(const ParticleState<2>& s, VecArray<2>& f) override {
     double energy = 0;
     for (int m = 0; m < p_.polygons(); ++m) {

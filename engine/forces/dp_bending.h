@@ -28,6 +28,8 @@ class DpBending final : public ForceTerm<2> {
     return {energy, 0};
   }
   bool active() const { return k_ != 0; }
+  /// The per-edge constant c of a species, K_b / (2 n_v l0^2) (the lane kernel reads it)
+  double edge_constant(int species) const { return c_of_[species]; }
   /// Per edge k of the measured polygon: dU/de_k into edges.bend_dx/dy, edge k's energy with its next edge into edges.bend_u; on the way the unit
   /// vectors and inverse lengths (edges.ux, uy, inv_len). Only when active().
   void edge_gradients(PolygonEdges& edges) const {

@@ -63,6 +63,8 @@ class DpSegmentLength final : public ForceTerm<2> {
     }
   }
   double longest_edge() const { return longest_; }
+  /// K_l of a species (the lane kernel reads the constants it uses)
+  double stiffness(int species) const { return k_[species]; }
   /// For a pass over the polygons that calls add_polygon itself.
   void set_longest_edge(double longest) { longest_ = longest; }
 

@@ -565,15 +565,19 @@ TEST(DpForces, ShapeEnergiesAreInvariantUnderRigidMotionAndZeroForReferencePolyg
 
 /// The cluster, a polygon with an edge on the orifice's corner (the corner term acts), and
 /// polygon 0 folded back at vertex 1 (the fold pairs act), with random velocities.
-std::unique_ptr<DpFixture> corner_and_fold_fixture(const char* model) {
-  SimConfig c = dp_config(model, int(cluster().size()) + 1, 0.4, 1.5);
+/// extra: polygons after the corner's, far from everything (so that the corner's polygon is
+/// not the last, e.g. inside a group of four of the shape pass's lanes).
+std::unique_ptr<DpFixture> corner_and_fold_fixture(const char* model, int extra = 0) {
+  std::vector<Vec<2>> centres = cluster();
+  const int m = int(centres.size());
+  centres.push_back({1.5, 0.6});  // moved onto the orifice corner below
+  for (int k = 0; k < extra; ++k) centres.push_back({-3.0 + 2.0 * k, 6.5});
+  SimConfig c = dp_config(model, int(centres.size()), 0.4, 1.5);
   use_authors_dp_set(c);
   c.resolve_and_validate();
-  std::vector<Vec<2>> centres = cluster();
-  centres.push_back({1.5, 0.6});  // moved onto the orifice corner below
   auto made = std::make_unique<DpFixture>(c, centres, 0.2, 17);
   DpFixture& fx = *made;
-  const int m = fx.poly.polygons() - 1, a = fx.poly.first[m], b = fx.poly.next[a];
+  const int a = fx.poly.first[m], b = fx.poly.next[a];
   const Vec<2> e = fx.verts.x[b] - fx.verts.x[a];
   const Vec<2> outward = Vec<2>(e[1], -e[0]).normalized();
   const Vec<2> shift = Vec<2>(0.5 * c.w, 0) - 0.5 * (fx.verts.x[a] + fx.verts.x[b]) - 0.02 * fx.shape.l0[1] * outward;
@@ -620,6 +624,34 @@ TEST(DpForces, FusedShapePassEqualsTheTermsOneAfterAnother) {
     }
     EXPECT_EQ(r.U_shape, energy[0] + energy[1] + energy[2]) << model;
     EXPECT_EQ(r.U_wall, energy[4] + energy[7]) << model;
+  }
+}
+
+// The shape pass takes four polygons at once in AVX2 lanes where the processor has AVX2
+// (avx2::ShapeLanes), one at a time otherwise; both must give the same forces and energies bit
+// for bit, with the fold and the orifice corner inside a group of four and in the tail.
+TEST(DpForces, ShapeLanesEqualOnePolygonAtATime) {
+  for (const char* model : {"dp_smooth", "dp_rough"}) {
+    for (const int extra : {0, 3}) {  // the corner's polygon last (the tail), or inside a group
+      const std::unique_ptr<DpFixture> made = corner_and_fold_fixture(model, extra);
+      DpFixture& fx = *made;
+      const Hopper<2> h = make_hopper<2>(fx.c);
+      DpForceField lanes(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c), one(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+      lanes.set_shape_lanes(true);
+      one.set_shape_lanes(false);
+      if (!lanes.shape_lanes()) GTEST_SKIP() << "no AVX2 on this processor: only the one-at-a-time path runs";
+      ParticleState<2> a = fx.verts, b = fx.verts;
+      const ForceReport ra = lanes.compute(a), rb = one.compute(b);
+      EXPECT_GT(ra.U_wall, 0) << model << ": the corner must act";
+      for (int i = 0; i < fx.verts.size(); ++i) {
+        ASSERT_EQ(a.f[i][0], b.f[i][0]) << model << " extra " << extra << " vertex " << i;
+        ASSERT_EQ(a.f[i][1], b.f[i][1]) << model << " extra " << extra << " vertex " << i;
+      }
+      EXPECT_EQ(ra.U_shape, rb.U_shape) << model;
+      EXPECT_EQ(ra.U_contact, rb.U_contact) << model;
+      EXPECT_EQ(ra.U_wall, rb.U_wall) << model;
+      EXPECT_EQ(ra.max_overlap, rb.max_overlap) << model;
+    }
   }
 }
 

@@ -69,12 +69,33 @@ FireResult DpSystem::minimize(const FireParams& p, double dt) {
 }
 
 void DpSystem::sync_bodies(ParticleState<2>& bodies) const {
+  // Each centroid is a sum in vertex order (its bits are what exits, reinjection and the
+  // observables see); a sum is a chain of dependent adds, so four polygons go side by side
+  // (eight independent chains), each still summed in its own order. Polygons are uniform.
   const double inv_nv = 1.0 / c_.dp.n_v;
-  for (int m = 0; m < poly_.polygons(); ++m) {
+  const int np = poly_.polygons(), n = c_.dp.n_v;
+  const Vec<2>* X = verts_.x.data();
+  const Vec<2>* V = verts_.v.data();
+  int m = 0;
+  for (; m + 4 <= np; m += 4) {
+    Vec<2> x[4], v[4];
+    for (int j = 0; j < 4; ++j) x[j] = v[j] = Vec<2>::Zero();
+    const int f = poly_.first[m];
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < 4; ++j) {
+        x[j] += X[f + j * n + k];
+        v[j] += V[f + j * n + k];
+      }
+    for (int j = 0; j < 4; ++j) {
+      bodies.x[m + j] = x[j] * inv_nv;
+      bodies.v[m + j] = v[j] * inv_nv;
+    }
+  }
+  for (; m < np; ++m) {
     Vec<2> x = Vec<2>::Zero(), v = Vec<2>::Zero();
     for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) {
-      x += verts_.x[i];
-      v += verts_.v[i];
+      x += X[i];
+      v += V[i];
     }
     bodies.x[m] = x * inv_nv;
     bodies.v[m] = v * inv_nv;

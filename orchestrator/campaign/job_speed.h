@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "orchestrator/db/database.h"
+#include "orchestrator/db/parameter_columns.h"
 
 namespace beverloo {
 
@@ -22,7 +23,7 @@ struct ModelSpeed {
 /// Per model and dimension, over the jobs of campaign campaign_id with a stored result.
 std::vector<ModelSpeed> campaign_speed(db::Database& db, std::int64_t campaign_id);
 
-/// The SQL of one job's value, over results r: t0 simulated per CPU-minute of a one-thread job.
-inline constexpr const char* kT0PerCpuMinuteSql = "json_extract(r.summary_json, '$.t_end') * 60.0 / r.wall_seconds";
+/// The SQL of one job's value, over results r (the runs view's column of the same name).
+using db::kT0PerCpuMinuteSql;
 
 }  // namespace beverloo

@@ -43,9 +43,10 @@ void sync_parameter_columns(Database& db) {
     added = true;
   }
   const std::string view = std::string("CREATE VIEW runs AS SELECT ") + kRunsJobColumns + generated + ", " +
-                           kRunsResultColumns + " FROM jobs j LEFT JOIN results r ON r.job_key = j.key";
+                           kRunsResultColumns + ", " + kT0PerCpuMinuteSql +
+                           " AS t0_per_cpu_minute FROM jobs j LEFT JOIN results r ON r.job_key = j.key";
   // rebuilt when a column was added or the view is another binary's (a database made before the
-  // view had engine_version, say): the view holds no data, so this loses nothing
+  // view had engine_version or t0_per_cpu_minute, say): the view holds no data, so this loses nothing
   Statement current = db.prepare("SELECT coalesce(sql, '') FROM sqlite_master WHERE type = 'view' AND name = 'runs'");
   if (!added && current.step() && current.get_text(0) == view) return;
   current.reset();

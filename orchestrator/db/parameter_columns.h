@@ -11,6 +11,10 @@
 
 namespace beverloo::db {
 
+/// The SQL of one job's speed over results r: t0 simulated per CPU-minute of a one-thread job
+/// (its t_end over its engine wall time; the runs view's t0_per_cpu_minute, job_speed.h).
+inline constexpr const char* kT0PerCpuMinuteSql = "json_extract(r.summary_json, '$.t_end') * 60.0 / r.wall_seconds";
+
 /// Adds the missing generated columns and, if any were added, rebuilds the `runs` view.
 /// Call inside the write transaction of open_store(). Idempotent.
 void sync_parameter_columns(Database& db);

@@ -92,11 +92,15 @@ TEST_F(StoreTest, ClaimIngestIsIdempotentAndSharedResultsAreNotRerun) {
                                    {"exits_total", 120}, {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1},
                                    {"a_eff", 0.9}, {"Q_prime", 1.4}, {"Q_prime_err", 0.1}, {"mean_F_drag", 0.3},
                                    {"mean_F_friction", 0}, {"force_ratio", nullptr}, {"dt", 1e-3}, {"steps", 200000},
-                                   {"wall_seconds", 3.0}, {"particle_steps_per_second", 3e7}}
+                                   {"wall_seconds", 3.0}, {"particle_steps_per_second", 3e7}, {"t_end", 210.0}}
                                   .dump();
   store.ingest_success(*job, summary, {0, 0.5}, {1, 2}, {0.1, 0.1});
   store.ingest_success(*job, summary, {0, 0.5}, {1, 2}, {0.1, 0.1});  // a second ingestion changes nothing
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM results"), 1);
+  // the job's speed in the runs view: 210 t0 in 3 s of engine time = 4200 t0 per CPU-minute
+  db::Statement speed = db.prepare("SELECT t0_per_cpu_minute FROM runs WHERE status IS NOT NULL");
+  ASSERT_TRUE(speed.step());
+  EXPECT_DOUBLE_EQ(speed.get_double(0), 4200.0);
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM velocity_profiles"), 2);
   EXPECT_EQ(store.counts(id).done, 1);
   // another campaign containing the finished job does not run it again

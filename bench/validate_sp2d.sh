@@ -6,7 +6,7 @@
 # Usage: bench/validate_sp2d.sh [OUT_DIR] [WORKERS]     (about 15-40 min on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-BIN=${BIN:-./build/orchestrator/beverloo}
+BIN=${BIN:-./build/cli/beverloo}
 OUT=${1:-out/validate_sp2d}
 WORKERS=${2:-$(nproc)}
 mkdir -p "$OUT/jobs"

@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh main
 scripts/build.sh main
-BIN=./build/orchestrator/beverloo
+BIN=./build/cli/beverloo
 "$BIN" run sweeps/quickstart.json --dir campaigns/quickstart
 "$BIN" campaign status --dir campaigns/quickstart
 "$BIN" query campaigns/quickstart \

@@ -2,11 +2,11 @@
 # Rewrites the two generated copies of the parameter table after a row of
 # engine/parameters.cpp changed: the $defs of schema/sweep.schema.json and the block of
 # docs/job-file.md between its parameters:begin / parameters:end markers.
-# Usage: scripts/regen-params.sh [BEVERLOO]   (default: build/orchestrator/beverloo)
+# Usage: scripts/regen-params.sh [BEVERLOO]   (default: build/cli/beverloo)
 # tests/orchestrator/test_parameters.cpp fails until both match the table.
 set -eu
 cd "$(dirname "$0")/.."
-bin=${1:-build/orchestrator/beverloo}
+bin=${1:-build/cli/beverloo}
 "$bin" params --format schema-defs > /tmp/beverloo-defs.$$
 "$bin" params --format markdown > /tmp/beverloo-md.$$
 python3 - /tmp/beverloo-defs.$$ /tmp/beverloo-md.$$ <<'PY'

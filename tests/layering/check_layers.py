@@ -12,12 +12,15 @@ ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.pat
 LAYERS = [
     ("core/", "core", 0),
     ("engine/", "engine", 1),
-    ("orchestrator/cli/", "cli", 4),
+    ("cli/", "cli", 4),
     ("orchestrator/", "orchestrator", 2),
     ("reports/", "reports", 3),
     ("bench/", "tools", 5),
 ]
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+# "..." and <...>: a project header named with angle brackets counts too (only paths under the
+# project's top folders are project headers; other angle includes are the system's)
+INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^">]+)[">]')
+TOPS = ("core", "engine", "orchestrator", "reports", "cli", "bench")
 
 
 def layer_of(rel):
@@ -28,14 +31,14 @@ def layer_of(rel):
 
 
 def resolve(rel_file, target):
-    if target.split("/")[0] in ("core", "engine", "orchestrator", "reports", "bench"):
+    if target.split("/")[0] in TOPS:
         return os.path.normpath(target)
     return os.path.relpath(os.path.normpath(os.path.join(ROOT, os.path.dirname(rel_file), target)), ROOT)
 
 
 def main():
     bad, checked = [], 0
-    for top in ("core", "engine", "orchestrator", "reports", "bench"):
+    for top in TOPS:
         for d, _, files in os.walk(os.path.join(ROOT, top)):
             for f in files:
                 if not f.endswith((".h", ".cpp")):
@@ -47,6 +50,8 @@ def main():
                         m = INCLUDE.match(line)
                         if not m:
                             continue
+                        if "<" in line.split("include", 1)[1] and m.group(1).split("/")[0] not in TOPS:
+                            continue  # a system header
                         target = resolve(rel, m.group(1))
                         dst = layer_of(target)
                         if dst is None:  # generated files, system headers in quotes

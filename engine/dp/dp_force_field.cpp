@@ -96,10 +96,10 @@ void DpForceField::set_threads(int threads) {
   if (rough_core_) rough_core_->set_threads(threads_);  // the rough disks and fold barrier: one thread
 }
 
-ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s) {
+ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s, bool energies) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
-  r.U_shape = shape_pass(s);
+  r.U_shape = shape_pass(s, energies);
   // The list must reach every edge of this very step: soft segments (K_l ~ 1) stretch edges to
   // several l0, and a list that does not follow misses contacts and lets vertices through edges.
   if (edge_outgrown_) reset_edge_bounds(s);
@@ -120,17 +120,14 @@ ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s) {
 }
 
 ForceReport DpForceField::compute(ParticleState<2>& s) {
-  energies_ = true;
-  ForceReport r = shape_list_and_contact(s);
-  add_vertex_terms(s, r, 0.0);
+  ForceReport r = shape_list_and_contact(s, true);
+  add_vertex_terms(s, r, 0.0, true);
   return r;
 }
 
 ForceReport DpForceField::compute_and_kick(ParticleState<2>& s, double dt, bool& finite) {
-  energies_ = false;
-  ForceReport r = shape_list_and_contact(s);
-  finite = add_vertex_terms(s, r, 0.5 * dt);
-  energies_ = true;
+  ForceReport r = shape_list_and_contact(s, false);
+  finite = add_vertex_terms(s, r, 0.5 * dt, false);
   ForceReport out;  // the forces' by-products only: no energies, no powers
   out.max_overlap = r.max_overlap;
   return out;
@@ -238,7 +235,7 @@ TailSweep tail_sweep(bool kick, bool energy) {
 }
 }  // namespace
 
-bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double half_dt) {
+bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double half_dt, bool energies) {
   // Each vertex takes the walls' force, then the corners' (edges near the orifice, few: in
   // order, one thread), then gravity, then drag: the order of the terms one after another. The
   // walls go in a sweep of their own, then gravity, drag and the kick in one more; the few
@@ -260,7 +257,7 @@ bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double 
   const bool gravity = gravity_.g() != 0, drag = drag_.active(), kick = half_dt > 0;
   for_chunks(chunks, [&, sums](int c) {
     const int begin = c * kVerticesPerChunk, end = std::min(n, begin + kVerticesPerChunk);
-    if (energies_) {
+    if (energies) {
       sums[c] = add_range(walls_, state, f, begin, end);
     } else {  // no running sum: most vertices have no wall in reach and cost one test
       for (int i = begin; i < end; ++i)
@@ -271,7 +268,7 @@ bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double 
   const VertexTail tail{s.x.data()->data(), s.v.data()->data(), s.f.data()->data(), s.inv_mass.data(),
                         s.species.data(), waits, {s.sp.mass[0], s.sp.mass[1]},
                         {drag ? drag_.coefficient(0) : 0.0, drag ? drag_.coefficient(1) : 0.0}, gravity_.g(), half_dt};
-  const bool e = energies_;
+  const bool e = energies;
   const TailSweep sweep = gravity ? (drag ? tail_sweep<true, true>(kick, e) : tail_sweep<true, false>(kick, e))
                                   : (drag ? tail_sweep<false, true>(kick, e) : tail_sweep<false, false>(kick, e));
   for_chunks(chunks, [&, sums, bad, sweep](int c) {
@@ -302,7 +299,7 @@ bool DpForceField::add_vertex_terms(ParticleState<2>& s, ForceReport& r, double 
 
 // One chunk of polygons of the shape pass. (Compiled also for AVX2 with target_clones it ran
 // 0.8 times as fast on case g: with 16 edges a polygon, 4-wide loops are mostly prologue.)
-void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
+void DpForceField::shape_chunk(ParticleState<2>& s, int c, bool energies) {
   const int np = poly_.polygons();
   ShapeChunk& ch = shape_chunks_[c];
   ch.corner_edges.clear();
@@ -314,7 +311,7 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
   for (int m = c * kPolygonsPerChunk, end = std::min(np, (c + 1) * kPolygonsPerChunk); m < end; ++m) {
     if (lanes_ && m + 4 <= end) {  // four polygons at once, in polygon order for every sum and list
       double sums[3] = {U_area, U_length, U_bending};
-      shape_four(s, m, ch, sums, longest, outgrown);
+      shape_four(s, m, ch, energies, sums, longest, outgrown);
       U_area = sums[0];
       U_length = sums[1];
       U_bending = sums[2];
@@ -326,7 +323,7 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
     segments_.edge_forces(edges);
     if (bending_.active()) bending_.edge_gradients(edges);
     write_shape_forces(edges, bending_.active(), s.f);
-    if (energies_) {
+    if (energies) {
       for (int k = 0; k < edges.count; ++k) U_length += edges.seg_u[k];
       for (int k = 0; bending_.active() && k < edges.count; ++k) U_bending += edges.bend_u[k];
     }
@@ -380,7 +377,7 @@ void DpForceField::shape_chunk(ParticleState<2>& s, int c) {
   ch.outgrown = outgrown;
 }
 
-void DpForceField::shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, double sums[3], double& longest,
+void DpForceField::shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, bool energies, double sums[3], double& longest,
                               bool& outgrown) {
   int first[4], sp[4];
   const int n = poly_.first[m + 1] - poly_.first[m];
@@ -392,12 +389,12 @@ void DpForceField::shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, double
   const double fold_w2[2] = {folds->fold_width2(0), folds->fold_width2(1)};
   avx2::ShapeLanes& L = ch.lanes;
   L.run(s.x.data()->data(), s.f.data()->data(), first, sp, n, lane_constants_, edge_bound_.data(), folds->has_folds(),
-        fold_w2);
+        fold_w2, energies);
   outgrown = outgrown || L.grown;
   longest = L.longest > longest ? L.longest : longest;
   const double* sq = L.sq();
   for (int j = 0; j < 4; ++j) {  // polygon m + j: what the one-polygon path does after its forces
-    if (energies_) {
+    if (energies) {
       sums[0] += L.U_area[j];
       for (int k = 0; k < n; ++k) sums[1] += L.seg_u()[4 * k + j];
       for (int k = 0; lane_constants_.bending && k < n; ++k) sums[2] += L.bend_u()[4 * k + j];
@@ -413,7 +410,7 @@ void DpForceField::shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, double
   }
 }
 
-double DpForceField::shape_pass(ParticleState<2>& s) {
+double DpForceField::shape_pass(ParticleState<2>& s, bool energies) {
   // Each vertex's force takes contributions of its own polygon's shape terms only, so polygon
   // by polygon (area, then segments, then bending within each) it sums the same numbers in the
   // same order as the three terms one after another over all polygons: the same forces, with
@@ -422,7 +419,7 @@ double DpForceField::shape_pass(ParticleState<2>& s) {
   // go in fixed chunks (any thread count: the same chunks, their sums in chunk order).
   const int np = poly_.polygons(), chunks = (np + kPolygonsPerChunk - 1) / kPolygonsPerChunk;
   if (static_cast<int>(shape_chunks_.size()) < chunks) shape_chunks_.resize(chunks);  // only when N grows
-  for_chunks(chunks, [&](int c) { shape_chunk(s, c); });
+  for_chunks(chunks, [&](int c) { shape_chunk(s, c, energies); });
   double U_area = 0, U_length = 0, U_bending = 0, longest = 0;
   bool outgrown = false;
   corner_edges_.clear();

@@ -93,12 +93,13 @@ class DpForceField {
   /// The shape terms (area, segment length, bending) polygon by polygon over edges measured
   /// once; on the way, whether an edge outgrew its bound and which edges may touch an orifice
   /// corner (corner_edges_). Returns their energy, each term's sum in its own order.
-  double shape_pass(ParticleState<2>& s);
+  double shape_pass(ParticleState<2>& s, bool energies);
   /// shape_pass()'s work on polygon chunk c: its forces, and its results into shape_chunks_[c].
-  void shape_chunk(ParticleState<2>& s, int c);
+  void shape_chunk(ParticleState<2>& s, int c, bool energies);
   struct ShapeChunk;
   /// The same for polygons m .. m + 3 at once in AVX2 lanes (avx2::ShapeLanes), the same bits.
-  void shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, double sums[3], double& longest, bool& outgrown);
+  void shape_four(ParticleState<2>& s, int m, ShapeChunk& ch, bool energies, double sums[3], double& longest,
+                  bool& outgrown);
   avx2::ShapeConstants lane_constants_;  ///< set at construction
   bool lanes_ = false;                   ///< the shape pass runs four polygons at once (AVX2 here)
   /// Every edge's bound set again from its length, and the list invalidated (an edge outgrew its bound).
@@ -125,11 +126,11 @@ class DpForceField {
   template <class Body>
   void for_chunks(int count, Body&& body) const { for_each_chunk(threads_, count, body); }
   /// Everything before the vertex terms: the shape pass, the list, the contact.
-  ForceReport shape_list_and_contact(ParticleState<2>& s);
+  ForceReport shape_list_and_contact(ParticleState<2>& s, bool energies);
   /// Walls, orifice corners, gravity and drag, vertex chunk by vertex chunk; with half_dt > 0
   /// also the kick of each vertex once its force is complete (returns whether every position
   /// and velocity is finite; without the kick: true).
-  bool add_vertex_terms(ParticleState<2>& s, ForceReport& r, double half_dt);
+  bool add_vertex_terms(ParticleState<2>& s, ForceReport& r, double half_dt, bool energies);
 
   const Hopper<2>& hopper_;
   FunnelCores cores_;             ///< the funnel walls' cores (thickness 0: unused)
@@ -149,7 +150,6 @@ class DpForceField {
   std::vector<std::uint8_t> waits_for_corners_;
   int threads_ = 1;
   bool edge_outgrown_ = false;    ///< set by shape_pass
-  bool energies_ = true;          ///< this evaluation sums energies and powers (compute(): yes)
   std::vector<int> corner_edges_; ///< edges (start vertex) that may touch an orifice corner, increasing
   std::vector<int> fold_vertices_; ///< vertices at which the fold pairs (smooth contact, rough fold barrier) may act, increasing
 };

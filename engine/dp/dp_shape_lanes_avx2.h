@@ -44,10 +44,11 @@ class ShapeLanes {
   /// Polygons starting at first[0..3] (n vertices each, contiguous and cyclic), species sp[0..3]:
   /// their shape forces assigned to F (AoS x, y; zero before), the results above. bound: each
   /// edge's list bound (DpForceField::edge_bound), fold_w2: the fold test's squared width per
-  /// species (fold_may_act; has_folds false: no fold test).
+  /// species (fold_may_act; has_folds false: no fold test). energies false: U_area, seg_u and
+  /// bend_u are left unset (a flow step needs none of them; the forces are the same).
   [[gnu::target("avx2")]] void run(const double* X, double* F, const int first[4], const int sp[4], int n_edges,
                                    const ShapeConstants& c, const double* bound, bool has_folds,
-                                   const double fold_w2[2]);
+                                   const double fold_w2[2], bool energies);
 
  private:
   enum Array { kX, kY, kEx, kEy, kSq, kLen, kAx, kAy, kSx, kSy, kSegU, kInv, kUx, kUy, kBx, kBy, kBendU, kArrays };
@@ -70,7 +71,7 @@ namespace shape_lanes {
 
 [[gnu::target("avx2")]] inline void ShapeLanes::run(const double* X, double* F, const int first[4], const int sp[4],
                                                     int n_edges, const ShapeConstants& c, const double* bound,
-                                                    bool has_folds, const double fold_w2[2]) {
+                                                    bool has_folds, const double fold_w2[2], bool energies) {
   using namespace shape_lanes;
   n = n_edges;
   if (4 * (n + 2) > stride_) {  // only when a polygon has more vertices than any before
@@ -126,7 +127,7 @@ namespace shape_lanes {
   const __m256d K_a = lanes_of(c.K_a, sp);
   const __m256d da = _mm256_sub_pd(_mm256_mul_pd(_mm256_set1_pd(0.5), twice_area), lanes_of(c.a0, sp));
   const __m256d ca = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-0.5), K_a), da);
-  _mm256_storeu_pd(U_area, _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(0.5), K_a), da), da));
+  if (energies) _mm256_storeu_pd(U_area, _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(0.5), K_a), da), da));
   double *ax = lane(kAx), *ay = lane(kAy);
   for (int k = 0; k < n; ++k) {
     _mm256_storeu_pd(at(ax, k), _mm256_mul_pd(ca, _mm256_sub_pd(ld(y, k + 1), ld(y, k - 1))));
@@ -139,7 +140,7 @@ namespace shape_lanes {
   double *sx = lane(kSx), *sy = lane(kSy), *su = lane(kSegU);
   for (int k = 0; k < n; ++k) {
     const __m256d stretch = _mm256_sub_pd(ld(len, k), l0);
-    _mm256_storeu_pd(at(su, k), _mm256_mul_pd(_mm256_mul_pd(half_K_l, stretch), stretch));
+    if (energies) _mm256_storeu_pd(at(su, k), _mm256_mul_pd(_mm256_mul_pd(half_K_l, stretch), stretch));
     const __m256d along = _mm256_div_pd(_mm256_mul_pd(minus_K_l, stretch), ld(len, k));
     _mm256_storeu_pd(at(sx, k), _mm256_mul_pd(along, ld(ex, k)));
     _mm256_storeu_pd(at(sy, k), _mm256_mul_pd(along, ld(ey, k)));
@@ -164,7 +165,7 @@ namespace shape_lanes {
     for (int k = 0; k < n; ++k) {
       const __m256d u = ld(ux, k), v = ld(uy, k), u1 = ld(ux, k + 1), v1 = ld(uy, k + 1);
       const __m256d tx = _mm256_sub_pd(u, u1), ty = _mm256_sub_pd(v, v1);
-      _mm256_storeu_pd(at(bu, k), _mm256_mul_pd(cb, _mm256_add_pd(_mm256_mul_pd(tx, tx), _mm256_mul_pd(ty, ty))));
+      if (energies) _mm256_storeu_pd(at(bu, k), _mm256_mul_pd(cb, _mm256_add_pd(_mm256_mul_pd(tx, tx), _mm256_mul_pd(ty, ty))));
       const __m256d gx = _mm256_mul_pd(two_c, _mm256_sub_pd(_mm256_sub_pd(_mm256_mul_pd(two, u), u1), ld(ux, k - 1)));
       const __m256d gy = _mm256_mul_pd(two_c, _mm256_sub_pd(_mm256_sub_pd(_mm256_mul_pd(two, v), v1), ld(uy, k - 1)));
       const __m256d g_along = _mm256_add_pd(_mm256_mul_pd(gx, u), _mm256_mul_pd(gy, v));

@@ -19,7 +19,7 @@ LAYERS = [
 ]
 # "..." and <...>: a project header named with angle brackets counts too (only paths under the
 # project's top folders are project headers; other angle includes are the system's)
-INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^">]+)[">]')
+INCLUDE = re.compile(r'^\s*#\s*include\s+(?:"([^"]+)"|<([^>]+)>)')
 TOPS = ("core", "engine", "orchestrator", "reports", "cli", "bench")
 
 
@@ -50,9 +50,9 @@ def main():
                         m = INCLUDE.match(line)
                         if not m:
                             continue
-                        if "<" in line.split("include", 1)[1] and m.group(1).split("/")[0] not in TOPS:
+                        if m.group(2) and m.group(2).split("/")[0] not in TOPS:
                             continue  # a system header
-                        target = resolve(rel, m.group(1))
+                        target = resolve(rel, m.group(1) or m.group(2))
                         dst = layer_of(target)
                         if dst is None:  # generated files, system headers in quotes
                             continue

@@ -20,6 +20,7 @@ struct DpSmoothContact::View {
   const int* prev;
   const int* owner;
   Vec<2>* f;
+  const double* edge_sq;  ///< per vertex k: |r_next(k) - r_k|^2, as may_touch computed it in place
   double width[2];  ///< copies of width_, eps_, eps_vertex_ (members could be aliased by the stores too)
   double eps, eps_vertex;
 };
@@ -116,11 +117,11 @@ void DpSmoothContact::edge_vertex(const View& s, int a, int b, Acc& acc, Sink& s
 }
 
 template <DpSmoothContact::Mode kMode, class Sink>
-void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, Acc& acc, Sink& sink) const {
+void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double da, Acc& acc, Sink& sink) const {
   // The same expression for the same pair of points wherever it is evaluated, so that the
   // nearer-end test of an edge gives one answer from either end (exactly one end counts it).
+  // da = dist2(a), from the row loop (|r_a - r_b|^2 and |r_b - r_a|^2 are the same bits).
   auto dist2 = [&](int u) { return (s.x[b] - s.x[u]).squaredNorm(); };
-  const double da = dist2(a);
   // A vertex one place beyond an edge's end (b = next(next(a)) or prev(prev(a)) of the same
   // polygon) is the fold loop's (the list leaves out its pair with that end).
   const int an = s.next[a], ap = s.prev[a];
@@ -130,12 +131,10 @@ void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, Acc& acc, Sin
   // (rough lists reach a disk diameter, vertices in contact sit ~0.87 l0 from a core edge).
   // The margin keeps rounding from ever skipping a pair that edge_vertex would count.
   const double dmn = 0.5 * (s.width[s.species[a]] + s.width[s.species[b]]);
-  auto may_touch = [&](int start, int end) {
-    return da <= (dmn * dmn + 0.25 * (s.x[end] - s.x[start]).squaredNorm()) * (1 + 1e-9);
-  };
-  if (b != s.next[an] && da <= dist2(an) && may_touch(a, an))
+  auto may_touch = [&](int edge_start) { return da <= (dmn * dmn + 0.25 * s.edge_sq[edge_start]) * (1 + 1e-9); };
+  if (b != s.next[an] && may_touch(a) && da <= dist2(an))
     edge_vertex<kMode>(s, a, b, acc, sink);  // edge a -> next
-  if (b != s.prev[ap] && da < dist2(ap) && may_touch(ap, a))
+  if (b != s.prev[ap] && may_touch(ap) && da < dist2(ap))
     edge_vertex<kMode>(s, ap, b, acc, sink);  // edge prev -> a
   if constexpr (kMode != Mode::FrictionOnly)
     if (corners_ && da < dmn * dmn && b != an && b != ap) corner_in_both_slabs(s, a, b, da, dmn, acc, sink);
@@ -170,18 +169,45 @@ template <DpSmoothContact::Mode kMode>
 TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, const std::vector<int>* fold_vertices,
                                  bool one_thread) const {
   const int n = s.size();
+  // Each edge's squared length once per evaluation (the per-pair test below reads it for both
+  // ends, and each list pair for four edges), and per vertex the larger of its two edges'.
+  if (pairs_) {
+    if (static_cast<int>(edge_sq_.size()) < n) {  // only when N grows
+      edge_sq_.resize(n);
+      edge_sq_max_.resize(n);
+    }
+    const Vec<2>* x = s.x.data();
+    const int* next = p_.next.data();
+    const int* prev = p_.prev.data();
+    for (int k = 0; k < n; ++k) edge_sq_[k] = (x[next[k]] - x[k]).squaredNorm();
+    for (int k = 0; k < n; ++k) edge_sq_max_[k] = std::max(edge_sq_[k], edge_sq_[prev[k]]);
+  }
   const View view{s.x.data(), s.v.data(),  s.species.data(), p_.next.data(), p_.prev.data(), p_.owner.data(),
-                  f.data(),   {width_[0], width_[1]}, eps_, eps_vertex_};
+                  f.data(),   edge_sq_.data(), {width_[0], width_[1]}, eps_, eps_vertex_};
   // The list's rows in fixed chunks of vertices; each chunk's sums (energy, power, largest
   // overlap) are its own and are added in chunk order, whatever the thread count.
   const int chunks = pairs_ ? (n + kRowsPerChunk - 1) / kRowsPerChunk : 0;
   if (static_cast<int>(chunk_acc_.size()) < chunks) chunk_acc_.resize(chunks);  // only when N grows
   auto rows = [&](int c, auto& sink) {
     Acc acc;
+    const Vec<2>* x = view.x;
+    const std::uint8_t* species = view.species;
+    const double* sq_max = edge_sq_max_.data();
     for (int i = c * kRowsPerChunk, end = std::min(n, (c + 1) * kRowsPerChunk); i < end; ++i) {
+      const Vec<2> xi = x[i];
+      const double wi = view.width[species[i]];
+      const double sq_i = sq_max[i];
       for (const int* p = list_.row_begin(i), *e = list_.row_end(i); p != e; ++p) {
-        edges_at_vertex<kMode>(view, i, *p, acc, sink);
-        edges_at_vertex<kMode>(view, *p, i, acc, sink);
+        const int j = *p;
+        // Most listed pairs touch nowhere: every branch of edges_at_vertex, from either end,
+        // needs d2 within may_touch's bound for one of the four edges at i and j (the corner
+        // within dmn^2, less). The bound with the longest of them is at least each one's
+        // (each operation rounds monotonically), so a pair beyond it is skipped for sure.
+        const double d2 = (x[j] - xi).squaredNorm();
+        const double dmn = 0.5 * (wi + view.width[species[j]]);
+        if (d2 > (dmn * dmn + 0.25 * std::max(sq_i, sq_max[j])) * (1 + 1e-9)) continue;
+        edges_at_vertex<kMode>(view, i, j, d2, acc, sink);
+        edges_at_vertex<kMode>(view, j, i, d2, acc, sink);
       }
     }
     chunk_acc_[c] = acc;

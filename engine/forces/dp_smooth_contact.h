@@ -149,8 +149,9 @@ class DpSmoothContact final : public ForceTerm<2> {
     Vec<2> force;
   };
   /// The two edges meeting at vertex a against vertex b, each if a is its end nearer to b.
+  /// da: |r_b - r_a|^2
   template <Mode kMode, class Sink>
-  void edges_at_vertex(const View& s, int a, int b, Acc& acc, Sink& sink) const;
+  void edges_at_vertex(const View& s, int a, int b, double da, Acc& acc, Sink& sink) const;
   /// Vertex b in both slabs of the edges at a, within delta of a: one corner energy taken away.
   template <class Sink>
   void corner_in_both_slabs(const View& s, int a, int b, double da, double dmn, Acc& acc, Sink& sink) const;
@@ -181,6 +182,8 @@ class DpSmoothContact final : public ForceTerm<2> {
   mutable double max_overlap_ = 0;
   mutable std::pair<int, int> worst_{-1, -1};
   mutable std::vector<Acc> chunk_acc_;                  ///< per chunk of rows
+  mutable std::vector<double> edge_sq_;      ///< per vertex k: |r_next(k) - r_k|^2 this evaluation
+  mutable std::vector<double> edge_sq_max_;  ///< per vertex: the larger of its two edges' edge_sq_
   mutable std::vector<std::vector<ForceWrite>> logs_;  ///< per chunk of rows (threads > 1)
 };
 

@@ -178,31 +178,59 @@ std::uint8_t NeighborList<D>::walls_in_reach(const Vec<D>& x, double reach, cons
 }
 
 template <int D>
-void NeighborList<D>::end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper) {
-  row_end_[i] = static_cast<int>(nbr_.size());
-  nbr_.insert(nbr_.end(), kRowSlack, -1);  // room for relocate()
-  // walls within reach of this particle until the next build
-  wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * wall_diameter(s, s.species[i]) + skin_, hopper);
-}
-
-template <int D>
 void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) {
   const int n = s.size();
   start_build(s);
   bin(s);
   grid_sorted_ = false;
-  const Cutoffs cut2 = cutoffs(s.sp);
   cell_items_.resize(n);
   // fill in index order so that each cell lists its particles in increasing index
   cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
   for (int i = 0; i < n; ++i) cell_items_[cursor_[cell_of_[i]]++] = i;
+  // The candidates' data in cell order, so that the scans read memory in sequence (through
+  // cell_items_ every candidate was a load from anywhere in the arrays)
+  cell_x_.resize(n);
+  cell_species_.resize(n);
+  cell_extra_.resize(extra_ ? n : 0);
+  cell_group_.resize(group_ ? n : 0);
+  for (int k = 0; k < n; ++k) {
+    const int j = cell_items_[k];
+    cell_x_[k] = s.x[j];
+    cell_species_[k] = s.species[j];
+    if (extra_) cell_extra_[k] = (*extra_)[j];
+    if (group_) cell_group_[k] = (*group_)[j];
+  }
+  if (extra_) {
+    if (group_)
+      build_rows<true, true>(s, hopper);
+    else
+      build_rows<true, false>(s, hopper);
+  } else if (group_) {
+    build_rows<false, true>(s, hopper);
+  } else {
+    build_rows<false, false>(s, hopper);
+  }
+  slots_indexed_ = false;
+}
 
+template <int D>
+template <bool kExtra, bool kGroups>
+void NeighborList<D>::build_rows(const ParticleState<D>& s, const Hopper<D>& hopper) {
+  const int n = s.size();
+  const Cutoffs cut2 = cutoffs(s.sp);
   const auto& dims = dims_;
+  const Vec<D>* __restrict cx = cell_x_.data();
+  const std::uint8_t* __restrict csp = cell_species_.data();
+  const double* __restrict cextra = cell_extra_.data();
+  const int* __restrict cgroup = cell_group_.data();
+  const int* __restrict citem = cell_items_.data();
+  std::size_t q = 0;  // the next free slot of nbr_
   for (int i = 0; i < n; ++i) {
-    row_start_[i] = static_cast<int>(nbr_.size());
+    row_start_[i] = static_cast<int>(q);
     const Vec<D> xi = s.x[i];
     const int si = s.species[i];
     const double extra_i = extra(i);
+    const int gi = kGroups ? (*group_)[i] : -1;
     // decode cell coordinates of i
     int ci[3] = {0, 0, 0};
     int c = cell_of_[i];
@@ -214,25 +242,39 @@ void NeighborList<D>::build(const ParticleState<D>& s, const Hopper<D>& hopper) 
     const int lo1 = std::max(ci[1] - 1, 0), hi1 = std::min(ci[1] + 1, dims[1] - 1);
     const int lo2 = D == 3 ? std::max(ci[2] - 1, 0) : 0, hi2 = D == 3 ? std::min(ci[2] + 1, dims[2] - 1) : 0;
     for (int c2 = lo2; c2 <= hi2; ++c2)
-      for (int c1 = lo1; c1 <= hi1; ++c1)
-        for (int c0 = lo0; c0 <= hi0; ++c0) {
-          const int cc = (c2 * dims[1] + c1) * dims[0] + c0;
-          for (int k = cell_start_[cc]; k < cell_start_[cc + 1]; ++k) {
-            const int j = cell_items_[k];
-            if (j <= i || excluded(i, j)) continue;
-            if (extra_) {
-              const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + extra_i + (*extra_)[j] + skin_;
-              if ((xi - s.x[j]).squaredNorm() < c * c) nbr_.push_back(j);
-            } else if ((xi - s.x[j]).squaredNorm() < cut2.c[si][s.species[j]]) {
-              nbr_.push_back(j);
-            }
+      for (int c1 = lo1; c1 <= hi1; ++c1) {
+        // the cells c0 = lo0 .. hi0 of one grid row are contiguous in cell order
+        const int first = (c2 * dims[1] + c1) * dims[0];
+        const int k0 = cell_start_[first + lo0], k1 = cell_start_[first + hi0 + 1];
+        if (nbr_.size() < q + (k1 - k0) + kRowSlack)
+          nbr_.resize(std::max<std::size_t>(2 * nbr_.size(), q + (k1 - k0) + kRowSlack + 64));
+        int* __restrict out = nbr_.data();
+        for (int k = k0; k < k1; ++k) {
+          const int j = citem[k];
+          const double d2 = (xi - cx[k]).squaredNorm();
+          bool listed;
+          if constexpr (kExtra) {
+            const double cut = 0.5 * (s.sp.sigma[si] + s.sp.sigma[csp[k]]) + extra_i + cextra[k] + skin_;
+            listed = d2 < cut * cut;
+          } else {
+            listed = d2 < cut2.c[si][csp[k]];
           }
+          listed = listed && j > i;
+          if constexpr (kGroups)
+            if (cgroup[k] == gi) listed = listed && !excluded(i, j);
+          out[q] = j;  // written always, kept if listed: no branch to mispredict
+          q += listed;
         }
-    std::sort(nbr_.begin() + row_start_[i], nbr_.end());
-    end_row(i, s, hopper);
+      }
+    std::sort(nbr_.begin() + row_start_[i], nbr_.begin() + q);
+    // close the row: its slack (room for relocate(); the resize above left room) and wall mask
+    row_end_[i] = static_cast<int>(q);
+    std::fill(nbr_.begin() + q, nbr_.begin() + q + kRowSlack, -1);
+    q += kRowSlack;
+    wall_mask_[i] = walls_in_reach(s.x[i], 0.5 * wall_diameter(s, s.species[i]) + skin_, hopper);
   }
-  row_start_[n] = static_cast<int>(nbr_.size());
-  slots_indexed_ = false;
+  nbr_.resize(q);
+  row_start_[n] = static_cast<int>(q);
 }
 
 template <int D>
@@ -285,7 +327,8 @@ void NeighborList<D>::build_sorting(ParticleState<D>& s, const Hopper<D>& hopper
     for (int d = 0; d < D; ++d) xi[d] = X[i * D + d];
     const double* cut_i = cut2.c[species[i]];
     const int type_i = 2 * species[i];
-    auto scan = [&](int from, int to) {
+    // always_inline: GCC stopped inlining this lambda when the TU grew (8 % of case b)
+    auto scan = [&](int from, int to) __attribute__((always_inline)) {
       if (static_cast<int>(nbr_.size()) < q + (to - from) + kRowSlack)
         nbr_.resize(std::max<std::size_t>(2 * nbr_.size(), q + (to - from) + kRowSlack + 64));
       if (static_cast<int>(pair_i_.size()) < p + (to - from))

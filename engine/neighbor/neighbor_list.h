@@ -209,14 +209,15 @@ class NeighborList {
     return out;
   }
   void start_build(const ParticleState<D>& s);
+  /// build()'s rows, with or without per-item extra reach and groups (decided once per build)
+  template <bool kExtra, bool kGroups>
+  void build_rows(const ParticleState<D>& s, const Hopper<D>& hopper);
   /// The pair runs (pair_i_, pair_j_, pair_type_, pair_start_) from the rows.
   void make_pair_runs(const std::uint8_t* species);
   /// slot_row_ (the row of every slot of nbr_), if not made since the last build or restore.
   void index_slots();
   /// The walls within reach of a particle at x (a bit per wall).
   static std::uint8_t walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper);
-  /// Closes row i (its slack, its wall mask).
-  void end_row(int i, const ParticleState<D>& s, const Hopper<D>& hopper);
 
   bool excluded(int i, int j) const {
     if (!group_) return false;
@@ -262,6 +263,11 @@ class NeighborList {
   std::vector<std::uint8_t> wall_mask_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing
   std::vector<int> cell_of_, cell_start_, cell_items_, cursor_, order_;
+  /// build(): each cell item's position, species, extra reach and group, in cell order
+  VecArray<D> cell_x_;
+  std::vector<std::uint8_t> cell_species_;
+  std::vector<double> cell_extra_;
+  std::vector<int> cell_group_;
   std::array<int, 3> dims_{1, 1, 1};
   // the grid of the last build, for for_each_near(): its origin and cell width, whether its
   // cells hold index ranges (build_sorting) or lists in cell_items_ (build), whether it exists

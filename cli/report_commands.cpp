@@ -1,9 +1,11 @@
 // `beverloo fit DIR` and `beverloo report DIR [-o OUT]`.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "commands.h"
 #include "guarded.h"
@@ -17,6 +19,15 @@
 
 namespace beverloo {
 namespace fs = std::filesystem;
+
+namespace {
+/// A new private directory under the system's temporary directory (mkdtemp: no race).
+std::string make_scratch_dir(const std::string& prefix) {
+  std::string path = (fs::temp_directory_path() / (prefix + "-XXXXXX")).string();
+  if (::mkdtemp(path.data()) == nullptr) throw IoError("cannot create a temporary directory like " + path);
+  return path;
+}
+}  // namespace
 
 int report_campaign(const std::string& dir, const std::string& out) {
   return guarded("report", [&] {
@@ -86,8 +97,19 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   fit->add_option("--w-step", *w_step, "--next: the grid of candidate widths (default 0.25)")->check(CLI::PositiveNumber);
   fit->callback([dir, authors_way, next, k_err, beta_err, w_range, w_step, &exit_status] {
     exit_status = guarded("fit", [&] {
-      CampaignWriter writer(*dir, CampaignWriter::Open::MustExist);
-      db::Database& db = writer.db();
+      // While a coordinator runs the campaign (one writer at a time), the results stored so far
+      // are fitted read-only: printed, not stored, the campaign's files untouched. A week-long
+      // campaign's user wants its fits before its end.
+      std::optional<CampaignWriter> writer;
+      std::optional<CampaignReader> reader;
+      try {
+        writer.emplace(*dir, CampaignWriter::Open::MustExist);
+      } catch (const CampaignBusy&) {
+        reader.emplace(*dir);
+        std::printf("fit: a coordinator is running this campaign: the results stored so far, fitted read-only "
+                    "(printed, not stored; `beverloo fit` after it stops stores them)\n\n");
+      }
+      db::Database& db = writer ? writer->db() : reader->db();
       const CampaignFits fits = fit_campaign(db);
       if (fits.series.empty()) {
         std::printf("fit: nothing to fit in %s: no job has a stored result and no series was imported "
@@ -95,8 +117,16 @@ void add_report_commands(CLI::App& app, int& exit_status) {
                     terminal_safe(*dir).c_str(), terminal_safe(*dir).c_str());
         return exit_code::kOk;
       }
-      store_fits(db, fits);
-      const std::string out = campaign_dir::report_path(*dir);
+      if (writer) store_fits(db, fits);
+      // read-only: the tables go to a directory of our own, removed when printed
+      const std::string out = writer ? campaign_dir::report_path(*dir) : make_scratch_dir("beverloo-fit");
+      struct RemoveScratch {
+        std::string dir;
+        ~RemoveScratch() {
+          std::error_code ec;
+          if (!dir.empty()) fs::remove_all(dir, ec);
+        }
+      } scratch{writer ? std::string() : out};
       write_fit_tables(fits, out);
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
@@ -122,6 +152,7 @@ void add_report_commands(CLI::App& app, int& exit_status) {
         if (s.left_out > 0)
           std::printf("\n%s: %d replica(s) with a flow rate but no usable error (Q_err not > 0) left out of the fit\n",
                       terminal_safe(s.label).c_str(), s.left_out);
+      if (!writer) return exit_code::kOk;
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits, beverloo_fits_both_ways, crossover_fits_both_ways, clog_statistics) and %s/*.csv, *.md\n",
                   terminal_safe(*dir).c_str(), terminal_safe(out).c_str());
       return exit_code::kOk;

@@ -2,7 +2,7 @@
 # Are two beverloo binaries' results identical? Runs one short job per model (SP 2D, SP 2D in
 # two force blocks (N = 1600, friction; and drag only), SP 3D,
 # smooth DP, rough DP, smooth DP with the authors' corrected set through the orifice, rough DP
-# with that set, friction only and a thick floor, and the
+# with that set, friction only and a thick floor, rough DP with that set and drag only, and the
 # authors' SP options with the lanes rule) with each binary and
 # compares result.h5 (h5dump at 17 digits: every dataset and attribute; the timing attributes
 # wall_seconds and particle_steps_per_second aside, and the engine_version and dt_limiting_term labels) and summary.json
@@ -21,6 +21,7 @@ declare -A JOBS=(
   [dp_rough]='{"model": "dp_rough", "N": 40, "W": 10, "w": 4, "zeta": 0, "mu": 2, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
   [dp_smooth_authors]='{"model": "dp_smooth", "N": 120, "W": 14, "w": 4, "zeta": 0, "mu": 0, "drag_rate": 1.95959, "dp": {"K_l": 88.29, "K_l_large": 123.62, "K_a": 3055.8, "K_a_large": 1559.1, "K_b": 0.02626, "wall_width": 1, "E_c": 231.48, "E_c_vertex": 115.74, "contact_width": 0.2}, "E_w": 11.574, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5}, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
   [dp_rough_authors_thick]='{"model": "dp_rough", "N": 120, "W": 14, "w": 4, "zeta": 0, "mu": 8.5052, "mu_n": 0, "dp": {"K_l": 88.29, "K_l_large": 123.62, "K_a": 3055.8, "K_a_large": 1559.1, "K_b": 2.626, "wall_width": 1, "wall_thickness": 1, "E_c": 115.74}, "E_w": 11.574, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5}, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
+  [dp_rough_authors_drag]='{"model": "dp_rough", "N": 120, "W": 14, "w": 4, "zeta": 0, "mu": 0, "drag_rate": 1.95959, "dp": {"K_l": 88.29, "K_l_large": 123.62, "K_a": 3055.8, "K_a_large": 1559.1, "K_b": 2.626, "wall_width": 1, "wall_thickness": 1, "E_c": 115.74}, "E_w": 11.574, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5}, "seed": 3, "run": {"t_max": 8, "min_window": 4, "min_transient": 2, "rate_bin": 0.5}}'
   [sp2d_authors]='{"dimension": 2, "N": 300, "W": 16, "w": 5, "zeta": 0, "mu": 8.5, "mu_n": 0, "E_sp": 138.889, "sp_contact_law": "force", "seed": 3, "reinjection": {"rule": "lanes", "drop_depth_diameters": 2.5}, "run": {"t_max": 30, "min_window": 10, "min_transient": 5}}'
 )
 status=0

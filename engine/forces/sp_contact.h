@@ -204,6 +204,10 @@ class SpContact final : public ForceTerm<D> {
   int simd_width_ = avx2::available() ? 4 : 2;  ///< pairs per step of the 2D runs (the 3D step's: 4 or 1)
   const std::vector<int>* friction_group_ = nullptr;
   bool rubs(int i, int j) const { return !friction_group_ || (*friction_group_)[i] != (*friction_group_)[j]; }
+  /// Whether friction acts on every pair in contact, as the SIMD pair runs assume: no friction
+  /// groups, or no friction at all (the rough DP disks of a drag-only job)
+  template <Friction kFriction>
+  bool rubs_everywhere() const { return !friction_group_ || kFriction == Friction::None; }
   double max_overlap_ = 0;
   // species-pair tables (prepare()): contact distance^2, its inverse, the energy scale
   double sig2_[2][2], inv_sig_[2][2], eps_ab_[2][2];
@@ -265,7 +269,7 @@ typename SpContact<D>::BlockSums SpContact<D>::loop(const ParticleState<D>& s, V
   BlockSums sums = [&] {
 #if defined(__SSE2__)
     if constexpr (D == 2 && Normal::kLanes)
-      if (!friction_group_ && simd_width_ >= 2) return pairs_sse2<kFriction, kKick>(s, f, b, hi);
+      if (rubs_everywhere<kFriction>() && simd_width_ >= 2) return pairs_sse2<kFriction, kKick>(s, f, b, hi);
 #endif
     return pairs<Normal, kFriction, kKick>(s, f, b, hi);
   }();
@@ -298,7 +302,7 @@ typename SpContact<D>::BlockSums SpContact<D>::pairs(const ParticleState<D>& s, 
 #if defined(BEVERLOO_HAVE_AVX2_PAIRS)
   // 3D, a step: four pairs at a time where the processor has AVX2 (the same bits; no sums needed)
   if constexpr (D == 3 && kKick && Normal::kLanes)
-    if (simd_width_ == 4 && !friction_group_)
+    if (simd_width_ == 4 && rubs_everywhere<kFriction>())
       q = avx2::four_pairs_run_3d<lane_friction<kFriction>()>(X, V, F, I, J, list_.pair_type(), q, q_end,
                                                               static_cast<std::size_t>(hi), lane_tables(), law_.mu_n,
                                                               law_.mu_t, max_ov);

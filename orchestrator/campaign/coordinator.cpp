@@ -133,13 +133,8 @@ class Coordinator {
       std::fprintf(stderr, "[beverloo] %s was not a directory; moved to %s\n", terminal_safe(dir).c_str(), terminal_safe(aside).c_str());
     }
     fs::create_directories(dir);
-    const nlohmann::json spec = {{"key", job.key},
-                                 {"attempt_no", job.attempt_no},
-                                 {"token", job.token},
-                                 {"heartbeat_s", o_.heartbeat_s},
-                                 {"threads", o_.threads},
-                                 {"job", nlohmann::json::parse(job.job_json)}};
-    write_text_atomically((fs::path(dir) / job_files::kSpec).string(), spec.dump(2) + "\n");
+    job_files::write_spec(dir, {job.key, job.attempt_no, job.token, o_.heartbeat_s, o_.threads,
+                                nlohmann::json::parse(job.job_json)});
   }
 
   /// An attempt has ended: decide from its files first (outcome.json with its token), then from

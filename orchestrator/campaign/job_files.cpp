@@ -12,6 +12,60 @@
 
 namespace beverloo::job_files {
 
+void write_spec(const std::string& job_dir, const Spec& s) {
+  const nlohmann::json j = {{"key", s.key},
+                            {"attempt_no", s.attempt_no},
+                            {"token", s.token},
+                            {"heartbeat_s", s.heartbeat_s},
+                            {"threads", s.threads},
+                            {"job", s.job}};
+  write_text_atomically((std::filesystem::path(job_dir) / kSpec).string(), j.dump(2) + "\n");
+}
+
+SpecRead read_spec(const std::string& path) {
+  SpecRead r;
+  nlohmann::json j;
+  std::ifstream in(path);
+  if (!in) {
+    r.unreadable = true;
+    r.problem = "cannot be read";
+    return r;
+  }
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const std::exception&) {
+    r.unreadable = true;
+    r.problem = "is not JSON";
+    return r;
+  }
+  // a damaged spec is a message, not an abort: every field with its type before it is read
+  auto problem = [&]() -> std::string {
+    if (!j.is_object()) return "is not a JSON object";
+    if (!j.contains("token") || !j["token"].is_string()) return "\"token\": missing or not a string";
+    r.token = j["token"].get<std::string>();
+    if (j.contains("key") && !j["key"].is_string()) return "\"key\": not a string";
+    if (!j.contains("attempt_no") || !j["attempt_no"].is_number_integer()) return "\"attempt_no\": missing or not an integer";
+    if (!j.contains("job") || !j["job"].is_object()) return "\"job\": missing or not an object";
+    if (j.contains("heartbeat_s") && !(j["heartbeat_s"].is_number() && j["heartbeat_s"].get<double>() > 0))
+      return "\"heartbeat_s\": not a positive number";
+    if (j.contains("threads") && !(j["threads"].is_number_integer() && j["threads"].get<std::int64_t>() >= 1 &&
+                                   j["threads"].get<std::int64_t>() <= 4096))
+      return "\"threads\": not an integer from 1 to 4096";
+    return "";
+  };
+  r.problem = problem();
+  if (!r.problem.empty()) return r;
+  Spec s;
+  s.key = j.value("key", "");
+  s.attempt_no = j["attempt_no"].get<int>();
+  s.token = r.token;
+  s.heartbeat_s = j.value("heartbeat_s", 30.0);
+  s.threads = static_cast<int>(j.value("threads", std::int64_t{1}));
+  s.job = std::move(j["job"]);
+  r.spec = std::move(s);
+  return r;
+}
+
 std::optional<Outcome> read_outcome(const std::string& job_dir) {
   std::ifstream in(std::filesystem::path(job_dir) / kOutcome);
   if (!in) return std::nullopt;

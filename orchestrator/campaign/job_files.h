@@ -1,7 +1,7 @@
 #pragma once
 /// \file job_files.h
 /// \brief The file protocol between coordinator and worker, in jobs/<dir>/ (the same for every
-/// executor): spec.json (coordinator -> worker: key, attempt, token, job), lock (a flock that
+/// executor): spec.json (coordinator -> worker: Spec, one writer and one reader here), lock (a flock that
 /// the worker holds while it lives), heartbeat.json (worker -> coordinator, rewritten every
 /// heartbeat_s while the attempt runs), the engine's files, and outcome.json (worker ->
 /// coordinator, written last, atomically, carrying the attempt's token).
@@ -21,6 +21,28 @@ inline constexpr const char* kLock = "lock";
 inline constexpr const char* kOutcome = "outcome.json";
 inline constexpr const char* kLog = "log";
 inline constexpr const char* kHeartbeat = "heartbeat.json";
+
+/// spec.json: one attempt of one job, as the coordinator writes it for the worker.
+struct Spec {
+  std::string key;           ///< the job's content address
+  int attempt_no = 0;
+  std::string token;         ///< this attempt's (outcome.json and heartbeats carry it back)
+  double heartbeat_s = 30;   ///< seconds between heartbeat records (> 0)
+  int threads = 1;           ///< threads for the engine's steps, 1 .. 4096
+  nlohmann::json job;        ///< the job file (an object; SimConfig::from_json reads it)
+};
+/// What read_spec() found: the spec, or why there is none. A spec.json that is there but damaged
+/// has its problem (the field and what is wrong with it) and, where it has one, its token, so a
+/// worker can tell a damaged spec of its own attempt from one of a newer attempt.
+struct SpecRead {
+  std::optional<Spec> spec;
+  bool unreadable = false;  ///< no file, or not JSON
+  std::string token;        ///< the token if the file has one as text (also when damaged)
+  std::string problem;      ///< empty when spec is set
+};
+void write_spec(const std::string& job_dir, const Spec& s);
+/// Reads and checks spec.json at path: every field the worker reads, with its type and range.
+SpecRead read_spec(const std::string& path);
 
 struct Outcome {
   std::string token;

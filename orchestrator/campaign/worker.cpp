@@ -86,10 +86,10 @@ class HeartbeatWriter {
 
 /// One attempt in its job directory: the engine run, resumed from a checkpoint if there is one,
 /// ending with outcome.json (written last, atomically, with the attempt's token).
-int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::atomic<bool>* stop) {
+int run_attempt(const std::string& dir, const job_files::Spec& spec, const std::atomic<bool>* stop) {
   job_files::Outcome out;
-  out.token = spec.at("token");
-  out.attempt_no = spec.at("attempt_no");
+  out.token = spec.token;
+  out.attempt_no = spec.attempt_no;
   // success, or a failure class: its exit code and name come from the one table (core/failures.h)
   auto finish = [&](std::optional<FailureClass> failure, const std::string& message) {
     const int code = failure ? failure_info(*failure).exit_code : exit_code::kOk;
@@ -107,12 +107,12 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
   };
   SimConfig c;
   try {
-    c = SimConfig::from_json(spec.at("job"));
+    c = SimConfig::from_json(spec.job);
   } catch (const ConfigError& e) {
     return finish(FailureClass::InvalidParameters, e.what());
   }
   std::atomic<std::int64_t> step{0};
-  HeartbeatWriter heartbeat(dir, out.token, spec.value("heartbeat_s", 30.0), step);
+  HeartbeatWriter heartbeat(dir, out.token, spec.heartbeat_s, step);
   try {
     // A previous attempt may have finished the run and died before writing its outcome.
     const job_output::ResultCheck done = job_output::check_result(dir, c);
@@ -133,7 +133,7 @@ int run_attempt(const std::string& dir, const nlohmann::json& spec, const std::a
     opt.progress_step = &step;
     // the threads asked for, but never more than this process may run on (a node that grants
     // fewer CPUs): the result is the same for every count
-    opt.threads = std::min(static_cast<int>(spec.value("threads", std::int64_t{1})), usable_cpus());
+    opt.threads = std::min(spec.threads, usable_cpus());
     const RunResult r = run_hopper(c, opt);
     if (r.status == "interrupted") return finish(FailureClass::Interrupted, r.stop_reason);
     out.files = job_output::result_digests(dir);  // the bytes just written, for the coordinator to check
@@ -205,35 +205,20 @@ bool lock_within(int fd, double seconds, const std::atomic<bool>* stop) {
 
 
 
-/// What is wrong with a spec.json the coordinator should have written (empty: nothing): the
-/// fields the worker reads, with their types, so that a damaged one is a message, not an abort.
-std::string spec_problem(const nlohmann::json& s) {
-  if (!s.is_object()) return "is not a JSON object";
-  if (!s.contains("token") || !s["token"].is_string()) return "\"token\": missing or not a string";
-  if (!s.contains("attempt_no") || !s["attempt_no"].is_number_integer()) return "\"attempt_no\": missing or not an integer";
-  if (!s.contains("job") || !s["job"].is_object()) return "\"job\": missing or not an object";
-  if (s.contains("heartbeat_s") && !(s["heartbeat_s"].is_number() && s["heartbeat_s"].get<double>() > 0))
-    return "\"heartbeat_s\": not a positive number";
-  if (s.contains("threads") && !(s["threads"].is_number_integer() && s["threads"].get<std::int64_t>() >= 1 &&
-                                 s["threads"].get<std::int64_t>() <= 4096))
-    return "\"threads\": not an integer from 1 to 4096";
-  return "";
-}
-
 }  // namespace
 
 int run_worker(const std::string& spec_path) {
   const std::string dir = fs::path(spec_path).parent_path().string();
-  nlohmann::json spec;
-  if (!read_json(spec_path, spec)) {
+  const job_files::SpecRead read = job_files::read_spec(spec_path);
+  if (read.unreadable) {
     std::fprintf(stderr, "beverloo worker: cannot read %s\n", spec_path.c_str());
     return exit_code::kIo;
   }
-  if (const std::string p = spec_problem(spec); !p.empty()) {
-    std::fprintf(stderr, "beverloo worker: %s: %s\n", spec_path.c_str(), p.c_str());
+  if (!read.spec) {
+    std::fprintf(stderr, "beverloo worker: %s: %s\n", spec_path.c_str(), read.problem.c_str());
     return exit_code::kConfig;
   }
-  return run_attempt(dir, spec, install_stop_handlers());
+  return run_attempt(dir, *read.spec, install_stop_handlers());
 }
 
 int run_worker_task(const std::string& manifest_path, int task_index) {
@@ -267,29 +252,30 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
   for (const nlohmann::json& entry : tasks.at(task_index)) {
     const std::string dir = (root / entry.at("dir").get<std::string>()).string();
     const std::string token = entry.at("token");
-    auto current = [&](nlohmann::json& spec) {  // is this attempt still the job's current one?
-      return read_json((fs::path(dir) / job_files::kSpec).string(), spec) && spec.is_object() && spec.contains("token") &&
-             spec["token"].is_string() && spec["token"].get<std::string>() == token;
+    job_files::SpecRead read;
+    auto current = [&] {  // is this attempt still the job's current one?
+      read = job_files::read_spec((fs::path(dir) / job_files::kSpec).string());
+      return !read.unreadable && read.token == token;
     };
-    nlohmann::json spec;
-    if (!current(spec)) {
+    if (!current()) {
       // the coordinator has given this job to a newer attempt: this one must not run it
       std::fprintf(stderr, "beverloo worker: %s belongs to a newer attempt; skipped\n", dir.c_str());
       continue;
     }
-    if (const std::string p = spec_problem(spec); !p.empty()) {
-      std::fprintf(stderr, "beverloo worker: %s/%s: %s; skipped\n", dir.c_str(), job_files::kSpec, p.c_str());
+    if (!read.spec) {
+      std::fprintf(stderr, "beverloo worker: %s/%s: %s; skipped\n", dir.c_str(), job_files::kSpec, read.problem.c_str());
       status = exit_code::kConfig;
       continue;
     }
+    const job_files::Spec spec = *read.spec;
     const int lock = ::open((fs::path(dir) / job_files::kLock).c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
     bool locked = false;
     if (lock >= 0) {
       const std::atomic<std::int64_t> no_step{0};
-      HeartbeatWriter waiting(dir, token, spec.value("heartbeat_s", 30.0), no_step);  // alive while it waits
+      HeartbeatWriter waiting(dir, token, spec.heartbeat_s, no_step);  // alive while it waits
       locked = lock_within(lock, kLockWaitSeconds, stop);
     }
-    if (!locked || !current(spec)) {
+    if (!locked || !current()) {
       // another live worker runs this job (a superseded attempt that Slurm has not killed yet)
       std::fprintf(stderr, "beverloo worker: %s is locked by another worker or was given to a newer attempt; skipped\n",
                    dir.c_str());
@@ -300,11 +286,11 @@ int run_worker_task(const std::string& manifest_path, int task_index) {
     {
       LogRedirect log(dir);
       if (stop->load()) {
-        job_files::write_outcome(dir, {token, spec.at("attempt_no"), exit_code::kInterrupted, std::string(to_string(FailureClass::Interrupted)),
+        job_files::write_outcome(dir, {token, spec.attempt_no, exit_code::kInterrupted, std::string(to_string(FailureClass::Interrupted)),
                                        "not started: the array task was stopped before it", {}});
         code = exit_code::kInterrupted;
       } else {
-        std::fprintf(stderr, "beverloo worker: attempt %d in Slurm task %s_%s (restart %s)\n", spec.at("attempt_no").get<int>(),
+        std::fprintf(stderr, "beverloo worker: attempt %d in Slurm task %s_%s (restart %s)\n", spec.attempt_no,
                      env_or("SLURM_ARRAY_JOB_ID", "?").c_str(), env_or("SLURM_ARRAY_TASK_ID", "?").c_str(),
                      env_or("SLURM_RESTART_COUNT", "0").c_str());
         code = run_attempt(dir, spec, stop);

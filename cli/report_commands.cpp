@@ -95,7 +95,11 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   fit->add_option("--w-range", *w_range, "--next: the widths allowed, LO HI (default: 2 below the series' smallest to its largest)")
       ->expected(2);
   fit->add_option("--w-step", *w_step, "--next: the grid of candidate widths (default 0.25)")->check(CLI::PositiveNumber);
-  fit->callback([dir, authors_way, next, k_err, beta_err, w_range, w_step, &exit_status] {
+  auto flow_rate = std::make_shared<std::string>("Q");
+  fit->add_option("--flow-rate", *flow_rate,
+                  "Q (default) | Q_prime: fit Appendix B's Q' = Q a_eff / a_avg instead (printed, not stored)")
+      ->check(CLI::IsMember({"Q", "Q_prime"}));
+  fit->callback([dir, authors_way, next, k_err, beta_err, w_range, w_step, flow_rate, &exit_status] {
     exit_status = guarded("fit", [&] {
       // While a coordinator runs the campaign (one writer at a time), the results stored so far
       // are fitted read-only: printed, not stored, the campaign's files untouched. A week-long
@@ -110,23 +114,29 @@ void add_report_commands(CLI::App& app, int& exit_status) {
                     "(printed, not stored; `beverloo fit` after it stops stores them)\n\n");
       }
       db::Database& db = writer ? writer->db() : reader->db();
-      const CampaignFits fits = fit_campaign(db);
+      // Q' (Appendix B): fitted and printed, never stored: the stored fits and the report are Q's
+      const bool q_prime = *flow_rate == "Q_prime";
+      if (q_prime)
+        std::printf("fit: the flow rate Q' = Q a_eff / a_avg (Appendix B; a_eff = 1/rho_n near the orifice), printed, "
+                    "not stored\n\n");
+      const CampaignFits fits = fit_campaign(db, q_prime ? FlowRate::QPrime : FlowRate::Q);
       if (fits.series.empty()) {
         std::printf("fit: nothing to fit in %s: no job has a stored result and no series was imported "
                     "(`beverloo campaign status --dir %s` shows where the jobs are)\n",
                     terminal_safe(*dir).c_str(), terminal_safe(*dir).c_str());
         return exit_code::kOk;
       }
-      if (writer) store_fits(db, fits);
-      // read-only: the tables go to a directory of our own, removed when printed
-      const std::string out = writer ? campaign_dir::report_path(*dir) : make_scratch_dir("beverloo-fit");
+      const bool store = writer && !q_prime;
+      if (store) store_fits(db, fits);
+      // not stored: the tables go to a directory of our own, removed when printed
+      const std::string out = store ? campaign_dir::report_path(*dir) : make_scratch_dir("beverloo-fit");
       struct RemoveScratch {
         std::string dir;
         ~RemoveScratch() {
           std::error_code ec;
           if (!dir.empty()) fs::remove_all(dir, ec);
         }
-      } scratch{writer ? std::string() : out};
+      } scratch{store ? std::string() : out};
       write_fit_tables(fits, out);
       std::ifstream md(fs::path(out) / "beverloo_fits.md"), xmd(fs::path(out) / "crossover_fits.md");
       std::cout << md.rdbuf() << "\n" << xmd.rdbuf();
@@ -152,7 +162,7 @@ void add_report_commands(CLI::App& app, int& exit_status) {
         if (s.left_out > 0)
           std::printf("\n%s: %d replica(s) with a flow rate but no usable error (Q_err not > 0) left out of the fit\n",
                       terminal_safe(s.label).c_str(), s.left_out);
-      if (!writer) return exit_code::kOk;
+      if (!store) return exit_code::kOk;
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits, beverloo_fits_both_ways, crossover_fits_both_ways, clog_statistics) and %s/*.csv, *.md\n",
                   terminal_safe(*dir).c_str(), terminal_safe(out).c_str());
       return exit_code::kOk;

@@ -58,13 +58,13 @@ int Series::clogged_points() const {
   return n;
 }
 
-CampaignFits fit_campaign(db::Database& db) {
-  CampaignRuns runs = read_campaign_runs(db);
+CampaignFits fit_campaign(db::Database& db, FlowRate rate) {
+  CampaignRuns runs = read_campaign_runs(db, -1, rate);
   CampaignFits out;
   out.series = std::move(runs.series);
   for (Series& s : out.series) fit_series(s, runs.runs[s.key]);
   out.crossovers = crossover_groups(out.series, runs.base_job_of);
-  add_experiment_series(db, out);
+  if (rate == FlowRate::Q) add_experiment_series(db, out);  // the experiments have no Q'
   return out;
 }
 

@@ -103,9 +103,13 @@ struct CampaignFits {
   std::vector<Crossover> crossovers;
 };
 
-/// Reads the latest campaign of the database and its experiment series, and fits them. Never
-/// throws for unfittable data.
-CampaignFits fit_campaign(db::Database& db);
+/// Which flow rate a series is made of: Q (the default), or Appendix B's Q' = Q a_eff / a_avg
+/// (the area that left counted with the packing's own particle area near the orifice, a_eff =
+/// 1/rho_n), with its error.
+enum class FlowRate { Q, QPrime };
+/// Reads the latest campaign of the database and its experiment series (Q only), and fits them.
+/// Never throws for unfittable data.
+CampaignFits fit_campaign(db::Database& db, FlowRate rate = FlowRate::Q);
 /// The series of one campaign with their Beverloo fits only (no crossovers, no experiments):
 /// what the adaptive planner decides from.
 std::vector<Series> fit_campaign_series(db::Database& db, std::int64_t campaign);

@@ -20,10 +20,12 @@ std::string series_key_of(const nlohmann::json& job) {
   return sha256_hex(series_job.dump());
 }
 
-CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign) {
+CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRate rate) {
   CampaignRuns out;
+  // a clogged run's Q' is as missing as its Q (0): coalesce keeps the row
+  const std::string columns = rate == FlowRate::QPrime ? "coalesce(r.Q_prime, 0), coalesce(r.Q_prime_err, 0)" : "r.Q, r.Q_err";
   db::Statement st = db.prepare(
-      "SELECT j.key, j.job_json, r.Q, r.Q_err, r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
+      "SELECT j.key, j.job_json, " + columns + ", r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
       "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
       "WHERE c.campaign_id = coalesce(?1, (SELECT max(id) FROM campaigns)) ORDER BY c.point_index");
   if (campaign >= 0)

@@ -30,8 +30,8 @@ struct CampaignRuns {
   std::map<std::string, nlohmann::json> base_job_of;   ///< series key -> its job without the dissipation parameters
 };
 
-/// The jobs with a result of a campaign (campaign < 0: the latest).
-CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign = -1);
+/// The jobs with a result of a campaign (campaign < 0: the latest), their points of `rate`.
+CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign = -1, FlowRate rate = FlowRate::Q);
 /// A job's series key: sha256 of its canonical JSON without w, the replica and the seed.
 std::string series_key_of(const nlohmann::json& job);
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `beverloo fit` on a campaign whose coordinator is running fits the results stored so far
 # read-only: it prints the fits, stores nothing and leaves the campaign's files as they were;
-# after the coordinator has stopped, `fit` stores them as before.
+# after the coordinator has stopped, `fit` stores them as before; `--flow-rate Q_prime` fits
+# Appendix B's Q' and stores nothing.
 source "$(dirname "$0")/lib.sh"
 cat > "$WORK/s.json" <<'J'
 {"name": "fit_busy", "base": {"N": 60, "W": 12, "zeta": 0.3, "mu": 0, "seed": 5},
@@ -30,3 +31,15 @@ grep -q "fits stored in" "$WORK/fit2.out" || { cat "$WORK/fit2.out"; fail "fit d
 # the same table both ways
 diff <(grep "^| 2D" "$WORK/fit.out") <(grep "^| 2D" "$WORK/fit2.out") || fail "the read-only fit differs from the stored one"
 echo "ok  fit after the coordinator stopped: stored, the same table"
+# Appendix B's Q': fitted and printed, never stored (the stored fits stay Q's)
+before=$(files)
+"$BIN" fit "$WORK/c" --flow-rate Q_prime > "$WORK/fitp.out" || fail "fit --flow-rate Q_prime"
+grep -q "the flow rate Q' = Q a_eff / a_avg" "$WORK/fitp.out" || { cat "$WORK/fitp.out"; fail "no Q' header"; }
+grep -q "^| 2D SP" "$WORK/fitp.out" || { cat "$WORK/fitp.out"; fail "no Q' table"; }
+grep -q "fits stored in" "$WORK/fitp.out" && fail "a Q' fit claims to have stored its fits"
+[ "$before" = "$(files)" ] || fail "a Q' fit changed the campaign's files"
+# Q' differs from Q (the packing near the orifice is not the reference area), so its fit does too
+[ "$(grep '^| 2D SP' "$WORK/fitp.out")" != "$(grep '^| 2D SP' "$WORK/fit2.out")" ] || fail "the Q' fit equals the Q fit"
+set +e; "$BIN" fit "$WORK/c" --flow-rate rho_n > /dev/null 2> "$WORK/err"; rc=$?; set -e
+[ "$rc" -ne 0 ] || fail "an unknown --flow-rate was accepted"
+echo "ok  fit --flow-rate Q_prime: printed, not stored, not Q's fit"

@@ -120,15 +120,17 @@ template <DpSmoothContact::Mode kMode, class Sink>
 void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double da, Acc& acc, Sink& sink) const {
   // The same expression for the same pair of points wherever it is evaluated, so that the
   // nearer-end test of an edge gives one answer from either end (exactly one end counts it).
-  // da = dist2(a), from the row loop (|r_a - r_b|^2 and |r_b - r_a|^2 are the same bits).
+  // da = dist2(a), from the row loop (|r_a - r_b|^2 and |r_b - r_a|^2 are the same bits). The
+  // row loop's dmn is not passed in: recomputed here it measured faster (0.95 passed, 6 runs).
   auto dist2 = [&](int u) { return (s.x[b] - s.x[u]).squaredNorm(); };
   // A vertex one place beyond an edge's end (b = next(next(a)) or prev(prev(a)) of the same
   // polygon) is the fold loop's (the list leaves out its pair with that end).
   const int an = s.next[a], ap = s.prev[a];
   // Cheap rejection before the projection: from its nearer end a, the foot of b lies at most
   // half the edge away, so b is at least sqrt(da - |e|^2/4) from the edge (and sqrt(da) from a
-  // corner); beyond the contact width no branch of edge_vertex acts. Most list pairs end here
-  // (rough lists reach a disk diameter, vertices in contact sit ~0.87 l0 from a core edge).
+  // corner); beyond the contact width no branch of edge_vertex acts. Most list pairs ended
+  // already in the row loop, at this bound for the longest of the four edges (rough lists reach
+  // a disk diameter, vertices in contact sit ~0.87 l0 from a core edge); here each edge's own.
   // The margin keeps rounding from ever skipping a pair that edge_vertex would count.
   const double dmn = 0.5 * (s.width[s.species[a]] + s.width[s.species[b]]);
   auto may_touch = [&](int edge_start) { return da <= (dmn * dmn + 0.25 * s.edge_sq[edge_start]) * (1 + 1e-9); };

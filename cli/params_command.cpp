@@ -1,5 +1,6 @@
 // `beverloo params [--format table|markdown|json|schema-defs]`: the table of job parameters
-// (engine/parameters), the one place each parameter is described.
+// (engine/parameters), the one place each parameter is described; with --results the table of
+// a run's result fields (engine/protocol/result_fields).
 #include <iomanip>
 #include <iostream>
 
@@ -7,17 +8,54 @@
 
 #include "commands.h"
 #include "engine/parameters.h"
+#include "engine/protocol/result_fields.h"
 #include "core/failures.h"
 #include "orchestrator/sweep/sweep_schema.h"
 
 namespace beverloo {
+namespace {
+
+void print_result_fields(const std::string& format) {
+  auto group = [](const ResultField& f) {
+    return f.h5_group == ResultGroup::Result ? "/result" : f.h5_group == ResultGroup::Run ? "/run" : "";
+  };
+  auto sql = [](const ResultField& f) {
+    return f.sql == ResultSql::Column ? "column" : f.sql == ResultSql::Generated ? "generated" : "";
+  };
+  if (format == "markdown") {
+    std::cout << result_fields_markdown();
+  } else if (format == "json") {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const ResultField& f : result_fields())
+      rows.push_back({{"name", f.name}, {"sql_type", f.sql_type()}, {"unit", f.unit}, {"doc", f.doc},
+                      {"result_h5", group(f)}, {"summary_json", f.in_summary}, {"sql", sql(f)},
+                      {"runs_view", f.in_runs_view}});
+    std::cout << rows.dump(2) << "\n";
+  } else if (format == "schema-defs") {
+    std::cerr << "beverloo params: --results has no schema-defs (result fields are not sweep input)\n";
+  } else {
+    for (const ResultField& f : result_fields())
+      std::cout << std::left << std::setw(27) << f.name << std::setw(19) << f.unit << std::setw(9) << group(f)
+                << std::setw(11) << sql(f) << f.doc << "\n";
+  }
+}
+
+}  // namespace
 
 void add_params_command(CLI::App& app, int& exit_status) {
   auto* cmd = app.add_subcommand("params", "The job parameters: unit, default, valid range, sweepable, key, SQL column");
   auto format = std::make_shared<std::string>("table");
+  auto results = std::make_shared<bool>(false);
+  cmd->add_flag("--results", *results,
+                "The result fields instead: unit, result.h5 group, summary.json, SQL column, runs view (docs/database.md)");
   cmd->add_option("--format", *format, "table | markdown (docs/job-file.md) | json | schema-defs (schema/sweep.schema.json)")
       ->check(CLI::IsMember({"table", "markdown", "json", "schema-defs"}));
-  cmd->callback([format, &exit_status] {
+  cmd->callback([format, results, &exit_status] {
+    if (*results) {
+      print_result_fields(*format);
+      exit_status = *format == "schema-defs" ? exit_code::kConfig : exit_code::kOk;
+      return;
+    }
     if (*format == "markdown") {
       std::cout << parameters_markdown();
     } else if (*format == "schema-defs") {

@@ -1,11 +1,37 @@
 #include "result_file.h"
 #include "core/atomic_file.h"
 
+#include <type_traits>
+#include <variant>
+
 #include "../parameters.h"
+#include "../protocol/result_fields.h"
 
 #include "h5.h"
 
 namespace beverloo {
+namespace {
+
+/// A group of result.h5 whose attributes are the rows of the result-field table that live there
+/// (booleans as 0/1).
+void write_result_group(hid_t file, const char* name, ResultGroup which, const RunResult& r) {
+  H5Handle g = h5::create_group(file, name);
+  for (const ResultField& field : result_fields()) {
+    if (field.h5_group != which) continue;
+    const std::string attr_name(field.name);
+    std::visit(
+        [&](const auto& v) {
+          using V = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, double> || std::is_same_v<V, std::string>)
+            h5::attr(g, attr_name, v);
+          else
+            h5::attr(g, attr_name, static_cast<std::int64_t>(v));  // integers, booleans
+        },
+        field.get(r));
+  }
+}
+
+}  // namespace
 
 void write_result_file(const std::string& path, const SimConfig& c, const RunResult& r) {
   PendingFile file(path);  // removed if anything below fails (a full disk)
@@ -35,30 +61,7 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
       h5::attr(p, "seed", static_cast<std::int64_t>(r.seed));
       h5::attr(p, "dt", r.dt);
     }
-    {
-      H5Handle g = h5::create_group(f, "result");
-      h5::attr(g, "status", r.status);
-      h5::attr(g, "stop_reason", r.stop_reason);
-      h5::attr(g, "Q", r.Q);
-      h5::attr(g, "Q_err", r.Q_err);
-      h5::attr(g, "Q_rel_err", r.Q_rel_err);
-      h5::attr(g, "window_start", r.window_start);
-      h5::attr(g, "window_end", r.window_end);
-      h5::attr(g, "exits_in_window", r.exits_in_window);
-      h5::attr(g, "exits_total", r.exits_total);
-      h5::attr(g, "clogged", std::int64_t{r.clogged});
-      h5::attr(g, "clog_time", r.clog_time);
-      h5::attr(g, "clog_detected_time", r.clog_detected_time);
-      h5::attr(g, "rho_n", r.rho_n);
-      h5::attr(g, "rho_n_err", r.rho_n_err);
-      h5::attr(g, "a_eff", r.a_eff);
-      h5::attr(g, "Q_prime", r.Q_prime);
-      h5::attr(g, "Q_prime_err", r.Q_prime_err);
-      h5::attr(g, "mean_F_drag", r.mean_F_drag);
-      h5::attr(g, "mean_F_friction", r.mean_F_friction);
-      h5::attr(g, "force_ratio", r.force_ratio);
-      h5::attr(g, "max_overlap_seen", r.max_overlap_seen);
-    }
+    write_result_group(f, "result", ResultGroup::Result, r);
     {
       H5Handle g = h5::create_group(f, "exits");
       h5::write(g, "time", r.exit_time);
@@ -104,20 +107,7 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
       h5::write(g, "time", times);
       h5::write(g, "detected_time", detected);
     }
-    {
-      H5Handle g = h5::create_group(f, "run");
-      h5::attr(g, "steps", r.steps);
-      h5::attr(g, "t_end", r.t_end);
-      h5::attr(g, "dt_limiting_term", r.dt_limiting_term);
-      h5::attr(g, "fire_iterations", r.fire_iterations);
-      h5::attr(g, "fire_max_force", r.fire_max_force);
-      h5::attr(g, "reinjections", r.reinjections);
-      h5::attr(g, "reinjection_fallbacks", r.reinjection_fallbacks);
-      h5::attr(g, "wall_seconds", r.wall_seconds);
-      h5::attr(g, "particle_steps_per_second", r.particle_steps_per_second);
-      h5::attr(g, "neighbor_builds", r.neighbor_builds);
-      h5::attr(g, "resumed_times", std::int64_t{r.resumed_times});
-    }
+    write_result_group(f, "run", ResultGroup::Run, r);
     H5Fflush(f, H5F_SCOPE_GLOBAL);
   }
   file.commit();

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "orchestrator/db/database.h"
-#include "orchestrator/db/parameter_columns.h"
+#include "orchestrator/db/typed_columns.h"
 
 namespace beverloo {
 

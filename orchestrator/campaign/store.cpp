@@ -2,6 +2,7 @@
 
 #include "campaign_dir.h"
 #include "core/digest.h"
+#include "orchestrator/db/typed_columns.h"
 
 #include "engine/parameters.h"
 
@@ -198,37 +199,10 @@ void CampaignStore::ingest_success(const ClaimedJob& a, const std::string& summa
                                    const std::vector<double>& v_g, const std::vector<double>& v_g_err) {
   const nlohmann::json s = nlohmann::json::parse(summary_json);
   db::Transaction tx(db_);
-  db::Statement insert = db_.prepare(
-      "INSERT OR IGNORE INTO results (job_key, attempt_id, status, Q, Q_err, Q_rel_err, window_start, window_end, "
-      "exits_in_window, exits_total, clogged, clog_time, rho_n, a_eff, Q_prime, Q_prime_err, mean_F_drag, "
-      "mean_F_friction, force_ratio, dt, steps, wall_seconds, particle_steps_per_second, summary_json) VALUES "
-      "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24)");
-  auto num = [&](const char* k) { return s.at(k).is_number() ? s.at(k).get<double>() : INFINITY; };
-  insert.bind(1, a.key)
-      .bind(2, a.attempt_id)
-      .bind(3, s.at("status").get<std::string>())
-      .bind(4, num("Q"))
-      .bind(5, num("Q_err"))
-      .bind(6, num("Q_rel_err"))
-      .bind(7, num("window_start"))
-      .bind(8, num("window_end"))
-      .bind(9, s.at("exits_in_window").get<std::int64_t>())
-      .bind(10, s.at("exits_total").get<std::int64_t>())
-      .bind(11, static_cast<std::int64_t>(s.at("clogged").get<bool>()))
-      .bind(12, s.at("clogged").get<bool>() ? std::optional<double>(num("clog_time")) : std::nullopt)
-      .bind(13, num("rho_n"))
-      .bind(14, num("a_eff"))
-      .bind(15, num("Q_prime"))
-      .bind(16, num("Q_prime_err"))
-      .bind(17, num("mean_F_drag"))
-      .bind(18, num("mean_F_friction"))
-      .bind(19, num("force_ratio"))
-      .bind(20, num("dt"))
-      .bind(21, s.at("steps").get<std::int64_t>())
-      .bind(22, num("wall_seconds"))
-      .bind(23, num("particle_steps_per_second"))
-      .bind(24, summary_json)
-      .run();
+  db::Statement insert = db_.prepare(db::results_insert_sql());  // the stored fields of the result table
+  insert.bind(1, a.key).bind(2, a.attempt_id);
+  db::bind_result_columns(insert, s, summary_json);
+  insert.run();
   const bool fresh = db_.changes() > 0;
   if (fresh) {
     db::Statement prof = db_.prepare("INSERT OR IGNORE INTO velocity_profiles (job_key, h, v_g, v_g_err) VALUES (?1, ?2, ?3, ?4)");

@@ -1,6 +1,6 @@
 #include "migrations.h"
 
-#include "parameter_columns.h"
+#include "typed_columns.h"
 
 #include "schema_migrations.inc"  // generated: kMigrations[] = {{"0001_init.sql", R"(...)"}, ...}
 
@@ -51,7 +51,7 @@ void open_store(Database& db) {
     db.exec(kMigrations[v].sql);
     db.exec("PRAGMA user_version=" + std::to_string(v + 1));
   }
-  sync_parameter_columns(db);  // typed columns of the parameters added after schema 0005
+  sync_typed_columns(db);  // generated columns of parameters and results, the runs view
   if (db.scalar_int("SELECT count(*) FROM pragma_foreign_key_check") != 0)
     throw DbError("a schema migration left dangling references; the database is unchanged", SQLITE_CONSTRAINT);
   tx.commit();

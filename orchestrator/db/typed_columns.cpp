@@ -1,0 +1,105 @@
+#include "typed_columns.h"
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "engine/parameters.h"
+#include "engine/protocol/result_fields.h"
+
+namespace beverloo::db {
+namespace {
+
+// The runs view's job columns that schema 0001/0003 wrote by hand; the generated parameter
+// columns are appended to them.
+constexpr const char* kRunsJobColumns =
+    "j.key, j.dir, j.state, j.engine_version, j.model, j.dimension, j.N, j.W_container, j.w, j.theta_w_left_deg, j.theta_w_right_deg, "
+    "j.E_sp, j.E_w, j.zeta, j.mu, j.lambda, j.dissipation_scale, j.replica, j.seed, "
+    "j.n_v, j.K_a, j.K_l, j.K_b, j.E_c";
+
+std::set<std::string> columns_of(Database& db, const char* table) {
+  std::set<std::string> out;
+  Statement st = db.prepare(std::string("SELECT name FROM pragma_table_xinfo('") + table + "')");
+  while (st.step()) out.insert(st.get_text(0));
+  return out;
+}
+
+bool stored(const ResultField& f) { return f.sql == ResultSql::Column; }
+
+}  // namespace
+
+const std::string& results_insert_sql() {
+  static const std::string sql = [] {
+    std::string cols = "job_key, attempt_id", values = "?1, ?2";
+    int n = 2;
+    for (const ResultField& f : result_fields()) {
+      if (!stored(f)) continue;
+      cols += ", " + std::string(f.name);
+      values += ", ?" + std::to_string(++n);
+    }
+    return "INSERT OR IGNORE INTO results (" + cols + ", summary_json) VALUES (" + values + ", ?" + std::to_string(n + 1) +
+           ")";
+  }();
+  return sql;
+}
+
+void bind_result_columns(Statement& insert, const nlohmann::json& s, const std::string& summary_text) {
+  const bool clogged = s.at("clogged").get<bool>();
+  int i = 2;
+  for (const ResultField& f : result_fields()) {
+    if (!stored(f)) continue;
+    ++i;
+    const nlohmann::json& v = s.at(std::string(f.name));
+    if (f.null_unless_clogged && !clogged) {
+      insert.bind_null(i);
+      continue;
+    }
+    switch (f.type) {
+      case ResultType::Real: insert.bind(i, v.is_number() ? v.get<double>() : INFINITY); break;
+      case ResultType::Integer: insert.bind(i, v.get<std::int64_t>()); break;
+      case ResultType::Boolean: insert.bind(i, static_cast<std::int64_t>(v.get<bool>())); break;
+      case ResultType::Text: insert.bind(i, v.get<std::string>()); break;
+    }
+  }
+  insert.bind(i + 1, summary_text);
+}
+
+void sync_typed_columns(Database& db) {
+  bool added = false;
+  // parameters: the rows added after schema 0005 (the older ones are hand-written columns)
+  const std::set<std::string> have_jobs = columns_of(db, "jobs");
+  std::string job_columns;
+  for (const ParamSpec& p : job_parameters()) {
+    if (p.sql_column.empty() || !p.omit_at_default) continue;
+    const std::string col(p.sql_column);
+    job_columns += ", j." + col;
+    if (have_jobs.count(col)) continue;
+    std::string expr = "json_extract(job_json, '$." + std::string(p.path) + "')";
+    if (!p.sql_default.empty()) expr = "coalesce(" + expr + ", " + std::string(p.sql_default) + ")";
+    db.exec("ALTER TABLE jobs ADD COLUMN " + col + " " + std::string(p.sql_type()) + " GENERATED ALWAYS AS (" + expr +
+            ") VIRTUAL");
+    added = true;
+  }
+  // results: every summary field that schema 0001 did not store
+  const std::set<std::string> have_results = columns_of(db, "results");
+  std::string result_columns;
+  for (const ResultField& f : result_fields()) {
+    if (f.in_runs_view) result_columns += std::string(result_columns.empty() ? "" : ", ") + "r." + std::string(f.name);
+    if (f.sql != ResultSql::Generated || have_results.count(std::string(f.name))) continue;
+    db.exec("ALTER TABLE results ADD COLUMN " + std::string(f.name) + " " + std::string(f.sql_type()) +
+            " GENERATED ALWAYS AS (json_extract(summary_json, '$." + std::string(f.name) + "')) VIRTUAL");
+    added = true;
+  }
+  const std::string view = std::string("CREATE VIEW runs AS SELECT ") + kRunsJobColumns + job_columns + ", " +
+                           result_columns + ", " + kT0PerCpuMinuteSql +
+                           " AS t0_per_cpu_minute FROM jobs j LEFT JOIN results r ON r.job_key = j.key";
+  // rebuilt when a column was added or the view is another binary's (a database made before the
+  // view had engine_version or t0_per_cpu_minute, say): the view holds no data, so this loses nothing
+  Statement current = db.prepare("SELECT coalesce(sql, '') FROM sqlite_master WHERE type = 'view' AND name = 'runs'");
+  if (!added && current.step() && current.get_text(0) == view) return;
+  current.reset();
+  db.exec("DROP VIEW IF EXISTS runs");
+  db.exec(view);
+}
+
+}  // namespace beverloo::db

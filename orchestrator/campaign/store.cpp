@@ -64,11 +64,7 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
 
 void CampaignStore::insert_and_link(std::int64_t campaign, const std::vector<const JobSpec*>& jobs,
                                     std::int64_t point_index) {
-  db::Statement insert_job = db_.prepare(
-      "INSERT OR IGNORE INTO jobs (key, dir, job_json, engine_version, model, dimension, N, size_ratio, W_container, w, "
-      "theta_w_left_deg, theta_w_right_deg, E_sp, E_w, zeta, mu, lambda, dissipation_scale, gravity, replica, seed, "
-      "t_max, target_rel_err, n_v, K_a, K_l, K_b, E_c) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, "
-      "?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23, ?24, ?25, ?26, ?27, ?28)");
+  db::Statement insert_job = db_.prepare(db::jobs_insert_sql());  // the parameters' columns from their table
   db::Statement link = db_.prepare(
       "INSERT OR IGNORE INTO campaign_jobs (campaign_id, job_key, point_index, sweep_point) VALUES (?1, ?2, ?3, ?4)");
   std::int64_t index = point_index;
@@ -82,29 +78,9 @@ void CampaignStore::insert_and_link(std::int64_t campaign, const std::vector<con
         .bind(2, campaign_dir::job_dir_relative(j.key))
         .bind(3, j.job.dump())
         .bind(4, BEVERLOO_VERSION)
-        .bind(5, c.model)
-        .bind(6, c.dimension)
-        .bind(7, c.N)
-        .bind(8, c.size_ratio)
-        .bind(9, c.W)
-        .bind(10, c.w)
-        .bind(11, c.theta_w_left_deg)
-        .bind(12, c.theta_w_right_deg)
-        .bind(13, c.E_sp)
-        .bind(14, c.E_w)
-        .bind(15, c.zeta)
-        .bind(16, c.mu)
-        .bind(17, lambda)
-        .bind(18, scale)
-        .bind(19, c.gravity)
-        .bind(20, c.replica)
-        .bind(21, static_cast<std::int64_t>(c.effective_seed()))
-        .bind(22, c.run.t_max)
-        .bind(23, c.run.target_rel_err);
-    if (c.is_dp())
-      insert_job.bind(24, c.dp.n_v).bind(25, c.dp.K_a).bind(26, c.dp.K_l).bind(27, c.dp.K_b).bind(28, c.dp.E_c);
-    else
-      insert_job.bind_null(24).bind_null(25).bind_null(26).bind_null(27).bind_null(28);
+        .bind(5, lambda)
+        .bind(6, scale);
+    db::bind_parameter_columns(insert_job, c);
     insert_job.run();
     link.bind(1, campaign).bind(2, j.key).bind(3, index++).bind(4, j.point.dump()).run();
   }

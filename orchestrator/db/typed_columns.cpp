@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "engine/config.h"
 #include "engine/parameters.h"
 #include "engine/protocol/result_fields.h"
 
@@ -26,7 +27,55 @@ std::set<std::string> columns_of(Database& db, const char* table) {
 
 bool stored(const ResultField& f) { return f.sql == ResultSql::Column; }
 
+/// A parameter whose jobs column schema 0001 or 0003 wrote (a real column, filled on insert).
+bool hand_written(const ParamSpec& p) { return !p.sql_column.empty() && !p.omit_at_default; }
+
+bool is_dp_row(const ParamSpec& p) { return p.models == ParamModels::Dp || p.models == ParamModels::DpSmooth; }
+
 }  // namespace
+
+const std::string& jobs_insert_sql() {
+  static const std::string sql = [] {
+    std::string cols = "key, dir, job_json, engine_version, lambda, dissipation_scale", values = "?1, ?2, ?3, ?4, ?5, ?6";
+    int n = 6;
+    for (const ParamSpec& p : job_parameters()) {
+      if (!hand_written(p)) continue;
+      cols += ", " + std::string(p.sql_column);
+      values += ", ?" + std::to_string(++n);
+    }
+    return "INSERT OR IGNORE INTO jobs (" + cols + ") VALUES (" + values + ")";
+  }();
+  return sql;
+}
+
+void bind_parameter_columns(Statement& insert, const SimConfig& config) {
+  SimConfig c = config;  // the accessors give references into a config they may write
+  int i = 6;
+  for (const ParamSpec& p : job_parameters()) {
+    if (!hand_written(p)) continue;
+    ++i;
+    const ParamAccess& a = p.access;
+    if (is_dp_row(p) && !c.is_dp()) {
+      insert.bind_null(i);
+    } else if (p.type == ParamType::Seed) {
+      insert.bind(i, static_cast<std::int64_t>(c.effective_seed()));
+    } else if (a.real) {
+      insert.bind(i, a.real(c));
+    } else if (a.integer) {
+      insert.bind(i, a.integer(c));
+    } else if (a.integer64) {
+      insert.bind(i, a.integer64(c));
+    } else if (a.boolean) {
+      insert.bind(i, static_cast<std::int64_t>(a.boolean(c)));
+    } else if (a.text) {
+      insert.bind(i, a.text(c));
+    } else if (a.optional_real) {
+      insert.bind(i, a.optional_real(c));
+    } else {
+      throw DbError("parameter " + std::string(p.path) + " has a jobs column but no accessor", SQLITE_MISUSE);
+    }
+  }
+}
 
 const std::string& results_insert_sql() {
   static const std::string sql = [] {

@@ -17,6 +17,10 @@
 
 #include "database.h"
 
+namespace beverloo {
+struct SimConfig;
+}
+
 namespace beverloo::db {
 
 /// The SQL of one job's speed over results r: t0 simulated per CPU-minute of a one-thread job
@@ -29,6 +33,16 @@ inline constexpr const char* kT0PerCpuMinuteSql = "json_extract(r.summary_json, 
 /// is another binary's, rebuilds the `runs` view. Call inside the write transaction of
 /// open_store(). Idempotent.
 void sync_typed_columns(Database& db);
+
+/// INSERT OR IGNORE of one `jobs` row: ?1 key, ?2 dir, ?3 job_json, ?4 engine_version, ?5 lambda,
+/// ?6 dissipation_scale (what is not a parameter), then the parameters' columns that schemas
+/// 0001 and 0003 wrote by hand, in parameter-table order (the later ones are generated).
+const std::string& jobs_insert_sql();
+/// Binds those parameter columns (?7 on) from the resolved config through the table's accessors:
+/// the seed column holds the seed the run uses (derived when the job gives none); a DP row is
+/// NULL for an SP job (schema 0003), an SP row keeps its unused value for a DP job (E_sp is NOT
+/// NULL since 0001).
+void bind_parameter_columns(Statement& insert, const SimConfig& config);
 
 /// INSERT OR IGNORE of one `results` row: ?1 job_key, ?2 attempt_id, then the stored result
 /// fields in table order, then summary_json.

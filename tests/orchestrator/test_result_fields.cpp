@@ -1,7 +1,8 @@
 // The result-field table (engine/protocol/result_fields): every row reaches each place it names
 // (summary.json, result.h5's groups, the results table's stored and generated columns, the runs
 // view) with its value, and nothing else is written there; schema 0001's results columns are
-// exactly the rows stored by the store; docs/database.md shows the generated table.
+// exactly the rows stored by the store; docs/database.md shows the generated table. And the
+// jobs table's parameter columns: each one a row of the parameter table, filled by its accessor.
 #include <gtest/gtest.h>
 
 #include <hdf5.h>
@@ -15,6 +16,7 @@
 #include "engine/config.h"
 #include "engine/io/h5.h"
 #include "engine/io/result_file.h"
+#include "engine/parameters.h"
 #include "engine/protocol/result_fields.h"
 #include "engine/protocol/run_result.h"
 #include "orchestrator/campaign/store.h"
@@ -246,6 +248,51 @@ TEST(ResultFields, IngestedResultReadsBackFromEveryColumn) {
   ASSERT_TRUE(q.step());
   EXPECT_EQ(q.get_double(0), 0.1875);
   EXPECT_EQ(q.get_double(1), 90.5);
+}
+
+TEST(TypedColumns, JobsColumnsAreParameterRowsAndTheFewThatAreNot) {
+  Store st;
+  std::set<std::string> plain, generated;
+  db::Statement cols = st.db.prepare("SELECT name, hidden FROM pragma_table_xinfo('jobs')");
+  while (cols.step()) (cols.get_int(1) == 0 ? plain : generated).insert(cols.get_text(0));
+  // what is not a parameter: identity, derived dissipation, bookkeeping
+  std::set<std::string> expected_plain = {"key", "dir", "job_json", "engine_version", "lambda", "dissipation_scale",
+                                          "state", "retries_used", "created_at"},
+                        expected_generated;
+  for (const ParamSpec& p : job_parameters()) {
+    if (p.sql_column.empty()) continue;
+    (p.omit_at_default ? expected_generated : expected_plain).insert(std::string(p.sql_column));
+  }
+  EXPECT_EQ(plain, expected_plain);
+  EXPECT_EQ(generated, expected_generated);
+  // an SP and a DP job: the columns hold the resolved values (the DP ones NULL for SP; E_sp,
+  // unused by DP, keeps its default), the seed the one the run uses
+  const json sweep = {{"base", {{"N", 40}, {"W", 10}, {"zeta", 0.3}, {"mu", 0.0}}},
+                      {"sweep", {{"model", {"sp", "dp_smooth"}}, {"w", {4}}}}};
+  const Sweep s = Sweep::parse(sweep, "test");
+  const std::vector<JobSpec> jobs = s.expand();
+  st.store.create_campaign(s, sweep.dump(), jobs);
+  for (const JobSpec& j : jobs) {
+    db::Statement q = st.db.prepare("SELECT model, N, W_container, E_sp, E_w, K_l, E_c, seed, replica, t_max FROM jobs WHERE key = ?1");
+    q.bind(1, j.key);
+    ASSERT_TRUE(q.step());
+    const SimConfig& c = j.config;
+    EXPECT_EQ(q.get_text(0), c.model);
+    EXPECT_EQ(q.get_int(1), c.N);
+    EXPECT_EQ(q.get_double(2), c.W);
+    EXPECT_EQ(q.get_double(3), c.E_sp);
+    EXPECT_EQ(q.get_double(4), c.E_w);
+    if (c.is_dp()) {
+      EXPECT_EQ(q.get_double(5), c.dp.K_l);
+      EXPECT_EQ(q.get_double(6), c.dp.E_c);
+    } else {
+      EXPECT_TRUE(q.is_null(5));
+      EXPECT_TRUE(q.is_null(6));
+    }
+    EXPECT_EQ(static_cast<std::uint64_t>(q.get_int(7)), c.effective_seed());
+    EXPECT_EQ(q.get_int(8), c.replica);
+    EXPECT_EQ(q.get_double(9), c.run.t_max);
+  }
 }
 
 TEST(ResultFields, DocsDatabaseShowsTheGeneratedTable) {

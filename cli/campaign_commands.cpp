@@ -288,33 +288,35 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
   };
   // where workers run (docs/cluster.md)
   auto add_executor_options = [opts](CLI::App* cmd) {
-    SlurmOptions& s = opts->slurm;
     cmd->add_option("--executor", opts->executor, "local (worker processes here) | slurm (job arrays)")
         ->check(CLI::IsMember(executor_names()));
-    cmd->add_option("--partition", s.partition, "slurm: partition (default: the cluster's default)");
-    cmd->add_option("--time-limit", s.time_limit, "slurm: --time per array task, e.g. 4:00:00 (default: the partition's)");
-    cmd->add_option("--max-array", s.max_array, "slurm: tasks per array (default: MaxArraySize - 1, at most 1000)")
-        ->check(CLI::Range(1, 1000000));
-    cmd->add_option("--throttle", s.throttle, "slurm: array tasks running at once per array, the %N of --array (default: no limit)")
-        ->check(CLI::Range(1, 1000000));
-    cmd->add_option("--bundle", s.bundle, "slurm: jobs per array task (default: packed by estimated cost, see --bundle-target)")
-        ->check(CLI::Range(1, 10000));
-    cmd->add_option("--bundle-target", s.bundle_target_s, "slurm: estimated seconds of work per array task when packing (default 600)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--signal-lead", s.signal_lead_s, "slurm: seconds before the time limit at which workers checkpoint (default 120)")
-        ->check(CLI::Range(10, 86400));
-    cmd->add_option("--max-in-flight", s.max_in_flight, "slurm: attempts submitted and not yet ended (default 10000)")
-        ->check(CLI::Range(1, 10000000));
-    cmd->add_option("--poll-min", s.poll_min_s, "slurm: seconds between squeue calls after a change (default 2)")->check(CLI::PositiveNumber);
-    cmd->add_option("--poll-max", s.poll_max_s, "slurm: the interval doubles while nothing changes, up to this (default 60)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--result-grace", s.result_grace_s, "slurm: seconds to wait for the files of a task that ended (default 30)")
-        ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--stall-timeout", s.stall_timeout_s, "slurm: a RUNNING task silent this long is cancelled and rerun (default 600)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--sbatch-arg", s.sbatch_args, "slurm: passed to sbatch as it is (repeat: --sbatch-arg=--account=X --sbatch-arg=--mem=2G)")
-        ->allow_extra_args(false);
-    cmd->add_option("--worker-binary", s.worker_binary, "slurm: the beverloo compute nodes run (default: this one)");
+    // each executor's own options, as it declares them (orchestrator/executors): checked here
+    // by kind and range, parsed by the executor
+    for (const DeclaredOption& d : declared_executor_options()) {
+      const ExecutorOption o = d.option;
+      auto check = CLI::Validator(
+          [o](std::string& text) -> std::string {
+            if (o.kind != ExecutorOption::Kind::Integer && o.kind != ExecutorOption::Kind::Real) return "";
+            try {
+              option_number(o, text);
+            } catch (const ConfigError& e) {
+              const std::string what = e.what();  // "FLAG: reason": CLI11 names the flag itself
+              return what.substr(std::min(what.size(), o.flag.size() + 2));
+            }
+            return "";
+          },
+          "");
+      if (o.kind == ExecutorOption::Kind::TextList)
+        cmd->add_option_function<std::vector<std::string>>(
+               o.flag, [opts, o](const std::vector<std::string>& v) { opts->executor_options[o.flag] = v; }, o.help)
+            ->allow_extra_args(false)
+            ->check(check);
+      else
+        cmd->add_option_function<std::string>(
+               o.flag, [opts, o](const std::string& v) { opts->executor_options[o.flag] = {v}; }, o.help)
+            ->check(check)
+            ->type_name(o.kind == ExecutorOption::Kind::Integer ? "INT" : o.kind == ExecutorOption::Kind::Real ? "FLOAT" : "TEXT");
+    }
   };
   auto add_run_options = [&](CLI::App* cmd) {
     cmd->add_option("--dir", opts->dir, "campaign directory (default: campaigns/<sweep name>)");

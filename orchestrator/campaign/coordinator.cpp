@@ -302,7 +302,7 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
   if (o.workers <= 0) o.workers = std::max(1, usable_cpus() / o.threads);
   // (more single-threaded workers than cores stays allowed, as before: they only queue)
   if (o.executor == "local" && o.threads > 1) check_threads("--threads", o.threads, o.workers);
-  o.slurm.cpus_per_task = o.threads;
+  check_executor_options(o.executor, o.executor_options);  // another executor's option: refused before anything is written
   if (o.progress == ProgressMode::Auto) o.progress = isatty(STDERR_FILENO) ? ProgressMode::Terminal : ProgressMode::Log;
   // Parse and expand before touching the directory: a bad sweep writes nothing.
   std::optional<Sweep> sweep;
@@ -324,8 +324,8 @@ int run_campaign(const std::optional<std::string>& sweep_path, const CampaignOpt
   sigaddset(&chld, SIGCHLD);
   sigprocmask(SIG_BLOCK, &chld, nullptr);
   const std::unique_ptr<Executor> ex =
-      make_executor(o.executor, store, ExecutorSettings{.campaign_dir = o.dir, .workers = o.workers,
-                                                        .heartbeat_s = o.heartbeat_s, .slurm = o.slurm});
+      make_executor(o.executor, store, ExecutorSettings{.campaign_dir = o.dir, .workers = o.workers, .threads = o.threads,
+                                                        .heartbeat_s = o.heartbeat_s, .options = o.executor_options});
   Coordinator c(db, campaign, o, *ex);
   return c.run(stop);
 }

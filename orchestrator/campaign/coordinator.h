@@ -10,7 +10,7 @@
 #include "campaign_dir.h"
 #include "planner.h"
 #include "engine/protocol/run_hopper.h"
-#include "orchestrator/slurm/slurm_options.h"
+#include "orchestrator/executors/executor_options.h"
 
 namespace beverloo {
 
@@ -23,8 +23,8 @@ struct CampaignOptions {
   double job_timeout_s = 0;  ///< wall seconds per attempt (0: none); then SIGTERM, checkpoint, resume later
   double heartbeat_s = 30;   ///< how often attempts.heartbeat_at is refreshed for live workers
   ProgressMode progress = ProgressMode::Auto;
-  std::string executor = "local";  ///< local | slurm
-  SlurmOptions slurm;              ///< the slurm executor's settings
+  std::string executor = "local";      ///< a name of executor_factory's registry: local | slurm
+  ExecutorOptionValues executor_options;  ///< the executor's own options as given (it parses them)
   /// Grows the campaign as results arrive (an adaptive sweep); nullptr: a fixed grid.
   CampaignPlanner* planner = nullptr;
 };

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/errors.h"
 #include "local_executor.h"
 #include "slurm_executor.h"
 
@@ -12,17 +13,23 @@ namespace beverloo {
 namespace {
 using Make = std::function<std::unique_ptr<Executor>(CampaignStore&, const ExecutorSettings&)>;
 
-const std::vector<std::pair<std::string, Make>>& registry() {
-  static const std::vector<std::pair<std::string, Make>> r = {
-      {"local",
+struct Row {
+  std::string name;
+  std::vector<ExecutorOption> options;  ///< its own command-line options (none: local)
+  Make make;
+};
+
+const std::vector<Row>& registry() {
+  static const std::vector<Row> r = {
+      {"local", {},
        [](CampaignStore& store, const ExecutorSettings& s) -> std::unique_ptr<Executor> {
          return std::make_unique<LocalExecutor>(store, s.campaign_dir, s.workers, s.heartbeat_s);
        }},
-      {"slurm",
+      {"slurm", SlurmExecutor::options(),
        [](CampaignStore& store, const ExecutorSettings& s) -> std::unique_ptr<Executor> {
          // array tasks run elsewhere and in other working directories: an absolute path
          const std::string dir = std::filesystem::absolute(s.campaign_dir).lexically_normal().string();
-         return std::make_unique<SlurmExecutor>(store, dir, s.slurm);
+         return std::make_unique<SlurmExecutor>(store, dir, SlurmExecutor::settings_from(s.options, s.threads));
        }},
   };
   return r;
@@ -31,13 +38,36 @@ const std::vector<std::pair<std::string, Make>>& registry() {
 
 std::vector<std::string> executor_names() {
   std::vector<std::string> names;
-  for (const auto& [name, make] : registry()) names.push_back(name);
+  for (const Row& row : registry()) names.push_back(row.name);
   return names;
 }
 
+std::vector<DeclaredOption> declared_executor_options() {
+  std::vector<DeclaredOption> out;
+  for (const Row& row : registry())
+    for (const ExecutorOption& o : row.options) out.push_back({row.name, o});
+  return out;
+}
+
+void check_executor_options(const std::string& name, const ExecutorOptionValues& given) {
+  for (const auto& [flag, values] : given) {
+    if (values.empty()) continue;
+    for (const DeclaredOption& d : declared_executor_options()) {
+      if (d.option.flag != flag || d.executor == name) continue;
+      bool also_ours = false;  // two executors may share a flag
+      for (const DeclaredOption& e : declared_executor_options()) also_ours |= e.executor == name && e.option.flag == flag;
+      if (!also_ours)
+        throw ConfigError(flag, "is an option of the " + d.executor + " executor; this run's --executor is " + name);
+    }
+  }
+}
+
 std::unique_ptr<Executor> make_executor(const std::string& name, CampaignStore& store, const ExecutorSettings& s) {
-  for (const auto& [n, make] : registry())
-    if (n == name) return make(store, s);
+  for (const Row& row : registry())
+    if (row.name == name) {
+      check_executor_options(name, s.options);
+      return row.make(store, s);
+    }
   throw std::invalid_argument("unknown executor \"" + name + "\"");
 }
 

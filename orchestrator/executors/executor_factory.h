@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "executor.h"
-#include "orchestrator/slurm/slurm_options.h"
+#include "executor_options.h"
 
 namespace beverloo {
 
@@ -15,13 +15,23 @@ namespace beverloo {
 struct ExecutorSettings {
   std::string campaign_dir;
   int workers = 0;          ///< local: worker processes
+  int threads = 1;          ///< threads per job (slurm: --cpus-per-task)
   double heartbeat_s = 30;  ///< local: heartbeat interval of live workers
-  SlurmOptions slurm;       ///< slurm: partition, limits, arrays
+  ExecutorOptionValues options;  ///< the executor's own command-line options, as given
 };
 
 /// The names `--executor` accepts, in the order the help lists them.
 std::vector<std::string> executor_names();
-/// Throws std::invalid_argument for an unknown name.
+/// Every executor's declared options, with the executor's name, in registry order.
+struct DeclaredOption {
+  std::string executor;
+  ExecutorOption option;
+};
+std::vector<DeclaredOption> declared_executor_options();
+/// Throws ConfigError naming the flag when an option of another executor was given (a Slurm
+/// partition for a local run is a mistake, not something to ignore). Call before writing anything.
+void check_executor_options(const std::string& name, const ExecutorOptionValues& given);
+/// Throws std::invalid_argument for an unknown name, ConfigError for a bad option value.
 std::unique_ptr<Executor> make_executor(const std::string& name, CampaignStore& store, const ExecutorSettings& s);
 
 }  // namespace beverloo

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "executor.h"
+#include "executor_options.h"
 #include "orchestrator/slurm/slurm_commands.h"
 #include "orchestrator/slurm/slurm_options.h"
 #include "orchestrator/slurm/slurm_output.h"
@@ -21,6 +22,10 @@ class SlurmExecutor final : public Executor {
  public:
   /// campaign_dir must be absolute: compute nodes see the job directories by that path.
   SlurmExecutor(CampaignStore& store, std::string campaign_dir, SlurmOptions options);
+  /// Its command-line options (slurm_executor_options.cpp), and the settings they give, with
+  /// threads per job as --cpus-per-task. Throws ConfigError for a bad value.
+  static std::vector<ExecutorOption> options();
+  static SlurmOptions settings_from(const ExecutorOptionValues& given, int threads);
   ~SlurmExecutor() override;
   std::string name() const override { return "slurm"; }
   std::string on_stop() const override {

@@ -22,22 +22,17 @@ with open(tmp, "w") as f:
     json.dump(schema, f, indent=2)
     f.write("\n")
 import os; os.replace(tmp, schema_path)
-md_path = "docs/job-file.md"
-md = open(md_path).read()
-block = open(sys.argv[2]).read()
-pat = re.compile(r"(<!-- parameters:begin[^>]*-->\n).*?(<!-- parameters:end -->)", re.S)
-if not pat.search(md):
-    sys.exit(md_path + ": parameters:begin/end markers not found")
-md = pat.sub(lambda m: m.group(1) + block + m.group(2), md)
-open(md_path + ".tmp", "w").write(md); os.replace(md_path + ".tmp", md_path)
-db_path = "docs/database.md"
-db = open(db_path).read()
-block = open(sys.argv[3]).read()
-pat = re.compile(r"(<!-- results:begin[^>]*-->\n).*?(<!-- results:end -->)", re.S)
-if not pat.search(db):
-    sys.exit(db_path + ": results:begin/end markers not found")
-db = pat.sub(lambda m: m.group(1) + block + m.group(2), db)
-open(db_path + ".tmp", "w").write(db); os.replace(db_path + ".tmp", db_path)
+def splice(path, marker, block_file):
+    """Replaces the text between <!-- MARKER:begin ... --> and <!-- MARKER:end --> in path."""
+    text = open(path).read()
+    block = open(block_file).read()
+    pat = re.compile(r"(<!-- " + marker + r":begin[^>]*-->\n).*?(<!-- " + marker + r":end -->)", re.S)
+    if not pat.search(text):
+        sys.exit(path + ": " + marker + ":begin/end markers not found")
+    text = pat.sub(lambda m: m.group(1) + block + m.group(2), text)
+    open(path + ".tmp", "w").write(text); os.replace(path + ".tmp", path)
+splice("docs/job-file.md", "parameters", sys.argv[2])
+splice("docs/database.md", "results", sys.argv[3])
 PY
 rm -f /tmp/beverloo-defs.$$ /tmp/beverloo-md.$$ /tmp/beverloo-results.$$
 echo "regenerated schema/sweep.schema.json \$defs, docs/job-file.md parameter block, docs/database.md result fields"

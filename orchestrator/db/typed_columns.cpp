@@ -3,6 +3,7 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "engine/config.h"
 #include "engine/parameters.h"
@@ -32,18 +33,24 @@ bool hand_written(const ParamSpec& p) { return !p.sql_column.empty() && !p.omit_
 
 bool is_dp_row(const ParamSpec& p) { return p.models == ParamModels::Dp || p.models == ParamModels::DpSmooth; }
 
+/// "INSERT OR IGNORE INTO table (c1, c2, ...) VALUES (?1, ?2, ...)", the columns in bind order.
+std::string insert_sql(const char* table, const std::vector<std::string>& columns) {
+  std::string cols, values;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    cols += (i ? ", " : "") + columns[i];
+    values += (i ? ", ?" : "?") + std::to_string(i + 1);
+  }
+  return std::string("INSERT OR IGNORE INTO ") + table + " (" + cols + ") VALUES (" + values + ")";
+}
+
 }  // namespace
 
 const std::string& jobs_insert_sql() {
   static const std::string sql = [] {
-    std::string cols = "key, dir, job_json, engine_version, lambda, dissipation_scale", values = "?1, ?2, ?3, ?4, ?5, ?6";
-    int n = 6;
-    for (const ParamSpec& p : job_parameters()) {
-      if (!hand_written(p)) continue;
-      cols += ", " + std::string(p.sql_column);
-      values += ", ?" + std::to_string(++n);
-    }
-    return "INSERT OR IGNORE INTO jobs (" + cols + ") VALUES (" + values + ")";
+    std::vector<std::string> cols = {"key", "dir", "job_json", "engine_version", "lambda", "dissipation_scale"};
+    for (const ParamSpec& p : job_parameters())
+      if (hand_written(p)) cols.emplace_back(p.sql_column);
+    return insert_sql("jobs", cols);
   }();
   return sql;
 }
@@ -79,15 +86,11 @@ void bind_parameter_columns(Statement& insert, const SimConfig& config) {
 
 const std::string& results_insert_sql() {
   static const std::string sql = [] {
-    std::string cols = "job_key, attempt_id", values = "?1, ?2";
-    int n = 2;
-    for (const ResultField& f : result_fields()) {
-      if (!stored(f)) continue;
-      cols += ", " + std::string(f.name);
-      values += ", ?" + std::to_string(++n);
-    }
-    return "INSERT OR IGNORE INTO results (" + cols + ", summary_json) VALUES (" + values + ", ?" + std::to_string(n + 1) +
-           ")";
+    std::vector<std::string> cols = {"job_key", "attempt_id"};
+    for (const ResultField& f : result_fields())
+      if (stored(f)) cols.emplace_back(f.name);
+    cols.emplace_back("summary_json");
+    return insert_sql("results", cols);
   }();
   return sql;
 }

@@ -369,6 +369,14 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
         if (a->k_err && a->beta_err) std::printf(" and");
         if (a->beta_err) std::printf(" beta_err <= %g", *a->beta_err);
         std::printf("\n");
+        if (const auto& l = a->lambda) {
+          std::printf("adaptive lambda: per beta(lambda) group up to %d more series at lambda in [%g, %g], %d per decade, until",
+                      l->max_added_series, l->lambda_lo, l->lambda_hi, l->per_decade);
+          if (l->log10_lambda_c_err) std::printf(" log10_lambda_c_err <= %g", *l->log10_lambda_c_err);
+          if (l->log10_lambda_c_err && l->b_err) std::printf(" and");
+          if (l->b_err) std::printf(" b_err <= %g", *l->b_err);
+          std::printf("\n");
+        }
       }
       return exit_code::kOk;
     });

@@ -1,11 +1,14 @@
 #include "adaptive_planner.h"
 
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "campaign_fits.h"
 #include "campaign_runs.h"
+#include "lambda_series.h"
+#include "next_lambda.h"
 #include "next_width.h"
 #include "number_format.h"
 #include "orchestrator/sweep/adaptive_spec.h"
@@ -18,6 +21,7 @@ struct SeriesJobs {
   json template_job;        ///< its first job (point order): what an added job copies
   bool busy = false;        ///< a job pending or running
   std::set<std::string> keys;
+  std::set<double> grid_widths;  ///< the widths of its jobs the sweep made (not the planner)
 };
 
 struct SeriesDecisions {
@@ -56,6 +60,110 @@ JobSpec job_at(const SeriesJobs& series, double w) {
     return spec;
   }
 }
+/// The decisions of a beta(lambda) group are rows with this series_key: its added series' jobs
+/// and its stop (the series keep their own rows, so a new series has its own budget of widths).
+std::string group_key(const Crossover& g) { return "lambda_" + g.key.substr(0, 16); }
+
+/// The lambda stage (adaptive_spec.h "lambda"): per beta(lambda) group not yet stopped, fit
+/// the crossover and add one whole series (the grid's widths of its nearest series) at the lambda
+/// next_lambda() chooses, or stop the group. Runs only when every series is decided.
+void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const CampaignFits& fits,
+                 std::map<std::string, SeriesJobs>& jobs, std::map<std::string, SeriesDecisions>& past,
+                 std::vector<PlanDecision>& out) {
+  for (const Crossover& g : fits.crossovers) {
+    const std::string gkey = group_key(g);
+    if (past[gkey].stopped) continue;
+    // series added to this group so far: the distinct series of its add rows' jobs
+    std::set<std::string> added_series;
+    {
+      db::Statement st = db.prepare(
+          "SELECT j.job_json FROM adaptive_decisions d JOIN jobs j ON j.key = d.job_key "
+          "WHERE d.series_key = ?1 AND d.action = 'add'");
+      st.bind(1, gkey);
+      while (st.step()) added_series.insert(series_key_of(json::parse(st.get_text(0))));
+    }
+    auto stop_group = [&](const std::string& reason) {
+      PlanDecision d;
+      d.series_key = gkey;
+      d.action = "stop";
+      d.reason = g.label + ": " + reason;
+      if (g.fit) {
+        d.k_err = g.fit->log10_lambda_c_err;  // the group's rows: log10 lambda_c and b in k's and beta's columns
+        d.beta_err = g.fit->b_err;
+      }
+      d.flowing_points = static_cast<int>(g.finite.size());
+      out.push_back(std::move(d));
+    };
+    if (!g.fit) {
+      stop_group("the crossover cannot be fitted: " + g.message);
+      continue;
+    }
+    std::vector<double> lambda, beta_err;
+    for (const Series* s : g.finite) {
+      lambda.push_back(s->lambda);
+      beta_err.push_back(s->fit->beta_err);
+    }
+    CrossoverAdvice advice;
+    try {
+      CrossoverTargets t;
+      t.log10_lambda_c_err = spec.log10_lambda_c_err;
+      t.b_err = spec.b_err;
+      advice = next_lambda(g.dimension, *g.fit, lambda, beta_err, spec.lambda_lo, spec.lambda_hi, spec.per_decade, t);
+    } catch (const FitError& e) {
+      stop_group(std::string("no design: ") + e.what());
+      continue;
+    }
+    const std::string errs =
+        "log10 lambda_c err " + num(advice.log10_lambda_c_err_now) + ", b err " + num(advice.b_err_now);
+    if (advice.targets_met) {
+      stop_group("targets met: " + errs);
+      continue;
+    }
+    if (static_cast<int>(added_series.size()) >= spec.max_added_series) {
+      stop_group("budget spent: " + std::to_string(added_series.size()) + " series added (max_added_series), " + errs);
+      continue;
+    }
+    // the two series nearest the new lambda: bracketing it, or the last two beyond an end
+    const double l_new = advice.next->lambda;
+    std::size_t hi = 0;
+    while (hi < g.finite.size() && g.finite[hi]->lambda < l_new) ++hi;
+    const std::size_t a = hi == 0 ? 0 : hi == g.finite.size() ? g.finite.size() - 2 : hi - 1;
+    const Series& near_a = *g.finite[a];
+    const Series& near_b = *g.finite[a + 1];
+    const SeriesJobs& ta = jobs[near_a.key];
+    const LambdaJob made = job_at_lambda(ta.template_job, jobs[near_b.key].template_job, l_new);
+    if (!made.job) {
+      stop_group("cannot place lambda = " + num(l_new) + ": " + made.problem);
+      continue;
+    }
+    const std::set<double>& widths = ta.grid_widths.empty() ? std::set<double>{ta.template_job.at("w").get<double>()} : ta.grid_widths;
+    for (const double w : widths) {
+      json job = *made.job;
+      job["w"] = w;
+      job["replica"] = 0;
+      PlanDecision d;
+      d.series_key = gkey;
+      d.action = "add";
+      JobSpec spec_job;
+      spec_job.config = SimConfig::from_json(job);
+      spec_job.key = job_key(spec_job.config);
+      spec_job.job = spec_job.config.to_json();
+      spec_job.point = {{"w", w}, {"lambda", l_new}, {"replica", 0}, {"adaptive", true}};
+      d.job = spec_job;
+      d.k_err = advice.log10_lambda_c_err_now;
+      d.beta_err = advice.b_err_now;
+      d.k_err_after = advice.next->log10_lambda_c_err_after;
+      d.beta_err_after = advice.next->b_err_after;
+      d.flowing_points = static_cast<int>(g.finite.size());
+      const bool predicted = std::isfinite(advice.next->log10_lambda_c_err_after);
+      d.reason = g.label + ": new series at lambda = " + num(l_new) + " (w = " + num(w) + "): " + errs +
+                 (predicted ? " -> " + num(advice.next->log10_lambda_c_err_after) + ", " + num(advice.next->b_err_after) +
+                                  " predicted"
+                            : "; the step lies between series: a series on it (no prediction)");
+      out.push_back(std::move(d));
+    }
+  }
+}
 }  // namespace
 
 std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t campaign) {
@@ -72,7 +180,7 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
   std::vector<std::string> order;  // series in the campaign's point order
   {
     db::Statement st = db.prepare(
-        "SELECT j.key, j.job_json, j.state FROM jobs j JOIN campaign_jobs c ON c.job_key = j.key "
+        "SELECT j.key, j.job_json, j.state, c.sweep_point FROM jobs j JOIN campaign_jobs c ON c.job_key = j.key "
         "WHERE c.campaign_id = ?1 ORDER BY c.point_index");
     st.bind(1, campaign);
     while (st.step()) {
@@ -86,6 +194,7 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
       it->second.keys.insert(st.get_text(0));
       const std::string state = st.get_text(2);
       it->second.busy = it->second.busy || state == "pending" || state == "running";
+      if (!json::parse(st.get_text(3)).value("adaptive", false)) it->second.grid_widths.insert(job.at("w").get<double>());
     }
   }
   std::map<std::string, SeriesDecisions> past;
@@ -99,10 +208,15 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
     }
   }
 
-  bool any_due = false;
-  for (const std::string& key : order) any_due = any_due || (!jobs[key].busy && !past[key].stopped);
-  if (!any_due) return {};
-  const std::vector<Series> fitted = fit_campaign_series(db, campaign);
+  bool any_due = false, any_busy = false;
+  for (const std::string& key : order) {
+    any_due = any_due || (!jobs[key].busy && !past[key].stopped);
+    any_busy = any_busy || jobs[key].busy;
+  }
+  // the lambda stage may be due once every series is quiet and decided
+  if (!any_due && !(spec->lambda && !any_busy)) return {};
+  const CampaignFits fits = fit_campaign_with_crossovers(db, campaign);
+  const std::vector<Series>& fitted = fits.series;
   std::map<std::string, const Series*> by_key;
   for (const Series& s : fitted) by_key[s.key] = &s;
 
@@ -158,6 +272,15 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
         << " x a run at the median Q";
     d.reason = why.str();
     out.push_back(std::move(d));
+  }
+  if (spec->lambda && !any_busy) {
+    // every series decided (before or just now) and none busy: the lambda stage
+    std::set<std::string> stopped_now;
+    for (const PlanDecision& d : out)
+      if (d.action == "stop") stopped_now.insert(d.series_key);
+    bool all_decided = out.empty() || stopped_now.size() == out.size();
+    for (const std::string& key : order) all_decided = all_decided && (past[key].stopped || stopped_now.count(key));
+    if (all_decided) plan_lambda(db, *spec->lambda, fits, jobs, past, out);
   }
   return out;
 }

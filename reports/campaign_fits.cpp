@@ -74,6 +74,15 @@ std::vector<Series> fit_campaign_series(db::Database& db, std::int64_t campaign)
   return std::move(runs.series);
 }
 
+CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign) {
+  CampaignRuns runs = read_campaign_runs(db, campaign);
+  CampaignFits out;
+  out.series = std::move(runs.series);
+  for (Series& s : out.series) fit_series(s, runs.runs[s.key]);
+  out.crossovers = crossover_groups(out.series, runs.base_job_of);  // point into out.series: moves keep them
+  return out;
+}
+
 /// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).
 std::string bound_names(const BoundedBeverlooFit& f) {
   std::string out;

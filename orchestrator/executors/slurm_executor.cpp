@@ -270,6 +270,16 @@ void SlurmExecutor::observe_files(Tracked& t) {
   }
 }
 
+std::string SlurmExecutor::scontrol_exit_code(const Tracked& t) {
+  // squeue shows no exit code; a FAILED task's tells a SIGKILLed worker from a crash (verdict_for)
+  const std::string task = t.array_id + "_" + std::to_string(t.task);
+  const slurm::CommandResult r = commands_.run({"scontrol", "show", "job", "-o", task});
+  if (r.rc != 0) return "";
+  for (const slurm::TaskRecord& rec : slurm::parse_jobcomp(r.out))
+    if (rec.array_job_id == t.array_id && rec.task == t.task) return rec.exit_code;
+  return "";
+}
+
 WorkerExit SlurmExecutor::ended(const Tracked& t, const std::string& state, const std::string& exit_code, bool with_verdict) {
   WorkerExit e;
   e.attempt_id = t.attempt_id;
@@ -340,7 +350,9 @@ std::vector<WorkerExit> SlurmExecutor::poll() {
     const bool final_outcome = ours && outcome->failure_class != to_string(FailureClass::Interrupted);
     if (known) {
       if (final_outcome || waited >= options_.result_grace_s) {
-        out.push_back(ended(t, t.state, rec->exit_code, true));
+        std::string exit_code = rec->exit_code;
+        if (!final_outcome && t.state == "FAILED" && exit_code.empty()) exit_code = scontrol_exit_code(t);
+        out.push_back(ended(t, t.state, exit_code, true));
         done.push_back(id);
       }
     } else if (final_outcome) {  // forgotten by squeue, no accounting record: the result file speaks for itself

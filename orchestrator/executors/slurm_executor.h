@@ -66,6 +66,8 @@ class SlurmExecutor final : public Executor {
   /// Final records of tasks that squeue no longer lists.
   std::map<slurm::TaskKey, slurm::TaskRecord> accounting(const std::set<std::string>& array_ids);
   void observe_files(Tracked& t);
+  /// The exit code ("exit:signal") of an ended task from `scontrol show job`; "" if unknown.
+  std::string scontrol_exit_code(const Tracked& t);
   WorkerExit ended(const Tracked& t, const std::string& state, const std::string& exit_code, bool with_verdict);
   double poll_interval_ = 0;
 

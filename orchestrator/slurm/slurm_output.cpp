@@ -190,7 +190,17 @@ Verdict verdict_for(const std::string& state, const std::string& exit_code) {
     return {FailureClass::OutOfMemory, "Slurm OUT_OF_MEMORY: give more memory (--sbatch-arg=--mem=...)" + code};
   if (state == "CANCELLED")
     return {FailureClass::Cancelled, "cancelled in Slurm (scancel); not retried: `beverloo campaign retry --include-cancelled` brings it back"};
-  if (state == "FAILED") return {FailureClass::Internal, "Slurm task FAILED without a result" + code};
+  if (state == "FAILED") {
+    // "exit:signal" as Slurm reports it: a worker killed by SIGKILL (by hand, by a watchdog; the
+    // cgroup's OOM killer ends as OUT_OF_MEMORY) is `killed`, as locally: a free rerun from its
+    // checkpoint. Any other failure without a result (a crash) is `internal`, from the budget.
+    int exit_status = 0, signal = 0;
+    const auto colon = exit_code.find(':');
+    if (colon != std::string::npos && parse_int(exit_code.substr(0, colon), exit_status) &&
+        parse_int(exit_code.substr(colon + 1), signal) && (signal == 9 || exit_status == 128 + 9))
+      return {FailureClass::Killed, "Slurm task killed by SIGKILL" + code + "; resumes from its checkpoint"};
+    return {FailureClass::Internal, "Slurm task FAILED without a result" + code};
+  }
   return {FailureClass::Lost, "Slurm task ended as " + state + code};
 }
 

@@ -20,7 +20,7 @@ struct TaskRecord {
   std::string state;         ///< base state word: RUNNING, CANCELLED ("CANCELLED by 0" -> CANCELLED), ...
   std::string reason;        ///< squeue's %r (empty elsewhere)
   std::string name;          ///< job name
-  std::string exit_code;     ///< "7:0" (sacct, jobcomp); empty from squeue
+  std::string exit_code;     ///< "7:0" (sacct, jobcomp, scontrol show job); empty from squeue
 };
 
 /// The format string squeue is called with; parse_squeue reads exactly these fields.
@@ -34,6 +34,7 @@ std::vector<TaskRecord> parse_squeue(const std::string& text);
 std::vector<TaskRecord> parse_sacct(const std::string& text);
 /// jobcomp/filetxt lines (key=value pairs); the last record of a task wins (a requeue writes a
 /// PENDING record first).
+/// Also reads `scontrol show job -o` (the same Key=Value words, one job per line).
 std::vector<TaskRecord> parse_jobcomp(const std::string& text);
 /// sbatch --parsable prints "<id>" or "<id>;<cluster>"; throws if that is not what it printed.
 std::string parse_sbatch_id(const std::string& out);
@@ -49,7 +50,8 @@ bool terminal(const std::string& state);
 
 /// The decision table (orchestration-peers.md 4.4) for an attempt whose task ended without a
 /// result file of its own (or with one that says "interrupted"): the failure class to record.
-/// COMPLETED without a result is `lost` (a rerun is free); FAILED is `internal`; the
+/// COMPLETED without a result is `lost` (a rerun is free); FAILED is `killed` when the exit code
+/// ("exit:signal") says SIGKILL (a free rerun, as locally), else `internal`; the
 /// infrastructure ends (TIMEOUT, PREEMPTED, NODE_FAIL, BOOT_FAIL, DEADLINE) resume from the
 /// checkpoint without using the retry budget; OUT_OF_MEMORY uses it (the same request would fail
 /// again); CANCELLED by a user is `cancelled`: the job is not retried.

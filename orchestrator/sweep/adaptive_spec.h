@@ -10,6 +10,16 @@
 ///                "w_range": [3, 12], "w_step": 0.5,             candidate widths
 ///                "max_added_jobs": 20}                          per series
 ///
+/// With a "lambda" block the planner also grows each beta(lambda) group (series differing only
+/// in lambda): once every series of the campaign is decided, it fits the crossover and adds a
+/// whole new series (the grid's widths) at the lambda that most reduces the variance of
+/// log10 lambda_c and b (reports/next_lambda.h), until those targets are met or the budget of
+/// added series is spent:
+///
+///   "lambda": {"target": {"log10_lambda_c_err": 0.1, "b_err": 0.3},   standard errors wanted
+///              "range": [1e-3, 10], "per_decade": 4,                    candidate lambdas
+///              "max_added_series": 4}                                   per group
+///
 /// The budget is a number of jobs, not CPU hours: CPU time differs between machines and runs,
 /// and the same results must always give the same decisions.
 #include <optional>
@@ -18,10 +28,18 @@
 
 namespace beverloo {
 
+struct LambdaAdaptiveSpec {
+  std::optional<double> log10_lambda_c_err, b_err;
+  double lambda_lo = 0, lambda_hi = 0;
+  int per_decade = 4;
+  int max_added_series = 4;
+};
+
 struct AdaptiveSpec {
   std::optional<double> k_err, beta_err;
   double w_lo = 0, w_hi = 0, w_step = 0.5;
   int max_added_jobs = 20;
+  std::optional<LambdaAdaptiveSpec> lambda;  ///< grow the beta(lambda) groups too
 
   /// Parses and checks the block (SweepError naming "adaptive.<field>").
   static AdaptiveSpec parse(const nlohmann::json& block);

@@ -90,6 +90,20 @@ TEST(SlurmOutput, PendingTasksOfACancelledArrayAreFoundThroughItsMetaRecord) {
   EXPECT_EQ(find_task(j, "1157", 9)->state, "CANCELLED");  // the meta record: no ArrayTaskId
 }
 
+TEST(SlurmOutput, ScontrolShowJobGivesTheExitCode) {
+  // `scontrol show job -o 970_1` as Slurm 22.05 printed it for a SIGKILLed worker (abridged)
+  const std::string line =
+      "JobId=972 ArrayJobId=970 ArrayTaskId=1 JobName=beverloo-0123456789abcdef UserId=root(0) Priority=1 "
+      "JobState=FAILED Reason=NonZeroExitCode Dependency=(null) Requeue=1 Restarts=0 BatchFlag=1 Reboot=0 "
+      "ExitCode=0:9 RunTime=00:00:03 TimeLimit=UNLIMITED\n";
+  const auto records = parse_jobcomp(line);
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0].array_job_id, "970");
+  EXPECT_EQ(records[0].task, 1);
+  EXPECT_EQ(records[0].state, "FAILED");
+  EXPECT_EQ(records[0].exit_code, "0:9");
+}
+
 TEST(SlurmOutput, SbatchAndConfig) {
   EXPECT_EQ(parse_sbatch_id("41\n"), "41");
   EXPECT_EQ(parse_sbatch_id("1234;cluster2\n"), "1234");
@@ -104,6 +118,13 @@ TEST(SlurmOutput, SbatchAndConfig) {
 TEST(SlurmReconciliation, EveryEndMapsToTheTableOfOrchestrationPeers) {
   EXPECT_EQ(verdict_for("COMPLETED").cls, FailureClass::Lost);  // no result: a free rerun
   EXPECT_EQ(verdict_for("FAILED", "1:0").cls, FailureClass::Internal);
+  // a worker SIGKILLed (the batch script execs it, so its signal is the task's): a free rerun
+  // from its checkpoint, as locally; a crash (SIGSEGV) or an unknown code stays internal
+  EXPECT_EQ(verdict_for("FAILED", "0:9").cls, FailureClass::Killed);
+  EXPECT_EQ(verdict_for("FAILED", "137:0").cls, FailureClass::Killed);
+  EXPECT_EQ(verdict_for("FAILED", "0:11").cls, FailureClass::Internal);
+  EXPECT_EQ(verdict_for("FAILED", "").cls, FailureClass::Internal);
+  EXPECT_EQ(verdict_for("FAILED", "garbage").cls, FailureClass::Internal);
   EXPECT_EQ(verdict_for("TIMEOUT").cls, FailureClass::Timeout);
   EXPECT_EQ(verdict_for("DEADLINE").cls, FailureClass::Timeout);
   EXPECT_EQ(verdict_for("PREEMPTED").cls, FailureClass::Preempted);

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Adaptive campaigns in lambda (issue 30: "the same for lambda_c"): once every series of a
+# beta(lambda) group is decided, the planner adds whole series (the grid's widths) at the lambda
+# where the crossover fit needs them, until its budget of series is spent; the new series are
+# refined like the others; a finished campaign run again decides nothing; the coordinator
+# SIGKILLed at random moments gives the same decisions, jobs and bits; bad lambda blocks are
+# refused naming their field.
+source "$(dirname "$0")/lib.sh"
+cat > "$WORK/sweep.json" <<'J'
+{"name": "adaptive-lambda",
+ "base": {"N": 150, "W": 10, "E_sp": 100},
+ "run": {"t_max": 300, "target_rel_err": 1e-6, "min_window": 10, "checkpoint_interval": 2},
+ "sweep": {"product": [{"lambda": [0.01, 0.1, 1]}, {"w": [3, 4, 5, 6]}]},
+ "adaptive": {"target": {"k_err": 0.001}, "w_range": [2.5, 8], "w_step": 0.5, "max_added_jobs": 1,
+              "lambda": {"target": {"log10_lambda_c_err": 0.001}, "range": [1e-3, 10], "per_decade": 4, "max_added_series": 2}}}
+J
+decisions() {
+  sqlite3 "$1/campaign.sqlite" "SELECT series_key, seq, action, coalesce(job_key, '-'), coalesce(w, '-'), reason
+                                FROM adaptive_decisions ORDER BY series_key, seq"
+}
+results() {
+  sqlite3 "$1/campaign.sqlite" "SELECT job_key, status, printf('%!.17g|%!.17g', Q, Q_err), steps FROM results ORDER BY job_key"
+}
+"$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> "$WORK/clean.log"
+clean=$(decisions "$WORK/clean")
+group=$(echo "$clean" | grep '^lambda_' || true)
+[ "$(echo "$group" | grep -c '|add|')" -eq 8 ] || fail "expected 2 new series of 4 widths in the group: $group"
+[ "$(echo "$group" | grep -c '|stop|.*budget spent: 2 series')" -eq 1 ] || fail "the group should stop on its budget: $group"
+lambdas=$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(DISTINCT printf('%.6g', lambda)) FROM jobs")
+[ "$lambdas" -eq 5 ] || fail "expected 5 lambdas (3 of the grid, 2 added), got $lambdas"
+# the new series are refined like the grid's: one added width each (max_added_jobs 1)
+[ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM jobs")" -eq 25 ] || fail "expected 12 + 3 + 8 + 2 jobs"
+[ "$(sqlite3 "$WORK/clean/campaign.sqlite" "SELECT count(*) FROM jobs WHERE state <> 'done'")" -eq 0 ] || fail "jobs not done"
+echo "$group" | cut -d'|' -f3,5,6 | sed 's/^/  /' | head -3
+echo "ok  the group grew by 2 series where beta(lambda) is steep and stopped on its budget"
+
+"$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> /dev/null
+[ "$(decisions "$WORK/clean")" = "$clean" ] || fail "a finished campaign run again took new decisions"
+echo "ok  a finished campaign run again decides nothing"
+
+RANDOM=${CHAOS_SEED:-5}
+dir="$WORK/chaos" rounds=0 kills=0
+while :; do
+  rounds=$((rounds + 1))
+  [ "$rounds" -le 200 ] || fail "no completion after 200 rounds"
+  "$BIN" run "$WORK/sweep.json" --dir "$dir" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
+  coord=$!
+  delay=$((RANDOM % 2500 + 300))
+  sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
+  if [ $((RANDOM % 2)) -eq 0 ]; then
+    pid=$(pgrep -f "worker $dir" | head -n 1 || true)
+    [ -n "$pid" ] && kill -9 "$pid" 2>/dev/null || true
+  fi
+  if kill -9 "$coord" 2>/dev/null; then kills=$((kills + 1)); fi
+  set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
+  [ "$rc" -eq 0 ] && break
+done
+pkill -9 -f "worker $dir" 2>/dev/null || true
+[ "$(decisions "$dir")" = "$clean" ] || { diff <(echo "$clean") <(decisions "$dir"); fail "decisions differ after $kills kills"; }
+[ "$(results "$dir")" = "$(results "$WORK/clean")" ] || fail "results differ after $kills kills"
+[ "$kills" -ge 2 ] || fail "too few kills ($kills) to mean anything"
+echo "ok  $kills coordinator kills in $rounds rounds: the same decisions, jobs and bits"
+
+bad() {  # $1: the lambda block, $2: the field the message must name
+  python3 - "$WORK/sweep.json" "$1" > "$WORK/bad.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1])); s["adaptive"]["lambda"] = json.loads(sys.argv[2]); print(json.dumps(s))
+PY
+  set +e; "$BIN" run "$WORK/bad.json" --dir "$WORK/bad" --progress quiet 2> "$WORK/err"; rc=$?; set -e
+  [ "$rc" -eq 2 ] || fail "lambda $1: exit $rc, expected 2"
+  grep -q "$2" "$WORK/err" || fail "lambda $1: message does not name $2: $(cat "$WORK/err")"
+  [ ! -e "$WORK/bad/campaign.sqlite" ] || fail "lambda $1: a campaign was created"
+}
+bad '{"range": [0.001, 10]}' 'adaptive.lambda.target'
+bad '{"target": {"b_err": 0}, "range": [0.001, 10]}' 'adaptive.lambda.target.b_err'
+bad '{"target": {"b_err": 0.1}, "range": [10, 0.001]}' 'adaptive.lambda.range'
+bad '{"target": {"b_err": 0.1}, "range": [0.001, 10], "per_decade": 0}' 'adaptive.lambda.per_decade'
+bad '{"target": {"b_err": 0.1}, "range": [0.001, 10], "max_added_series": 1.5}' 'adaptive.lambda.max_added_series'
+bad '{"target": {"b_err": 0.1}, "range": [0.001, 10], "steps": 3}' 'adaptive.lambda.steps'
+echo "ok  bad lambda blocks refused with their field named"

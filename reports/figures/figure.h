@@ -52,6 +52,7 @@ ReportFigure finish(Figure& f, const std::filesystem::path& dir, const std::stri
 const std::vector<FigureMaker>& report_figures();
 
 ReportFigure q_vs_w(const FigureContext& c);
+ReportFigure q_prime_vs_w(const FigureContext& c);
 ReportFigure loglog_collapse(const FigureContext& c);
 ReportFigure beta_vs_lambda(const FigureContext& c);
 ReportFigure k_vs_Esp(const FigureContext& c);

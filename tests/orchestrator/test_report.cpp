@@ -140,7 +140,7 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
     EXPECT_NE(index.find(f.name + ".svg"), std::string::npos) << f.name;
     EXPECT_NE(index.find(f.name + ".png"), std::string::npos) << f.name;
   }
-  EXPECT_EQ(made, 9);  // Q(w), collapse, beta(lambda), k(E_sp), k(K_b), k(K_l, K_b), profiles, the three regimes, clog survival
+  EXPECT_EQ(made, 10);  // Q(w), collapse, beta(lambda), k(E_sp), k(K_b), k(K_l, K_b), profiles, the three regimes, clog survival, Q'(w)
   // the fits, through the SQL views
   db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
   db::Statement st = db.prepare("SELECT beta, k, C FROM beverloo_fits WHERE E_sp = 1000 AND mu = 0");

@@ -131,7 +131,12 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
     const Series& near_a = *g.finite[a];
     const Series& near_b = *g.finite[a + 1];
     const SeriesJobs& ta = jobs[near_a.key];
-    const LambdaJob made = job_at_lambda(ta.template_job, jobs[near_b.key].template_job, l_new);
+    LambdaJob made;
+    try {  // a lambda the parameter table refuses (a drag rate beyond its range, say) stops the group
+      made = job_at_lambda(ta.template_job, jobs[near_b.key].template_job, l_new);
+    } catch (const std::exception& e) {
+      made.problem = e.what();
+    }
     if (!made.job) {
       stop_group("cannot place lambda = " + num(l_new) + ": " + made.problem);
       continue;

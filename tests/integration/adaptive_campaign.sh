@@ -59,23 +59,7 @@ total_kills=0 campaigns=0
 while [ "$total_kills" -lt "$MIN_KILLS" ]; do
   campaigns=$((campaigns + 1))
   dir="$WORK/chaos$campaigns"
-  rounds=0 kills=0
-  while :; do
-    rounds=$((rounds + 1))
-    [ "$rounds" -le 200 ] || fail "campaign $campaigns: no completion after 200 rounds"
-    "$BIN" run "$WORK/sweep.json" --dir "$dir" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
-    coord=$!
-    delay=$((RANDOM % DELAY_MS + 300))
-    sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
-    if [ $((RANDOM % 2)) -eq 0 ]; then
-      pid=$(pgrep -f "worker $dir" | head -n 1 || true)
-      [ -n "$pid" ] && kill -9 "$pid" 2>/dev/null || true
-    fi
-    if kill -9 "$coord" 2>/dev/null; then kills=$((kills + 1)); fi
-    set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
-    [ "$rc" -eq 0 ] && break
-  done
-  pkill -9 -f "worker $dir" 2>/dev/null || true
+  run_with_kills "$WORK/sweep.json" "$dir" "$DELAY_MS"
   [ "$(decisions "$dir")" = "$clean" ] || { diff <(echo "$clean") <(decisions "$dir"); fail "campaign $campaigns: decisions differ after $kills kills"; }
   [ "$(results "$dir")" = "$(results "$WORK/clean")" ] || fail "campaign $campaigns: results differ after $kills kills"
   [ "$(sqlite3 "$dir/campaign.sqlite" "SELECT count(*) - count(DISTINCT job_key) FROM results")" -eq 0 ] || fail "duplicate results"

@@ -39,23 +39,8 @@ echo "ok  the group grew by 2 series where beta(lambda) is steep and stopped on 
 echo "ok  a finished campaign run again decides nothing"
 
 RANDOM=${CHAOS_SEED:-5}
-dir="$WORK/chaos" rounds=0 kills=0
-while :; do
-  rounds=$((rounds + 1))
-  [ "$rounds" -le 200 ] || fail "no completion after 200 rounds"
-  "$BIN" run "$WORK/sweep.json" --dir "$dir" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
-  coord=$!
-  delay=$((RANDOM % 2500 + 300))
-  sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
-  if [ $((RANDOM % 2)) -eq 0 ]; then
-    pid=$(pgrep -f "worker $dir" | head -n 1 || true)
-    [ -n "$pid" ] && kill -9 "$pid" 2>/dev/null || true
-  fi
-  if kill -9 "$coord" 2>/dev/null; then kills=$((kills + 1)); fi
-  set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
-  [ "$rc" -eq 0 ] && break
-done
-pkill -9 -f "worker $dir" 2>/dev/null || true
+dir="$WORK/chaos"
+run_with_kills "$WORK/sweep.json" "$dir" 2500
 [ "$(decisions "$dir")" = "$clean" ] || { diff <(echo "$clean") <(decisions "$dir"); fail "decisions differ after $kills kills"; }
 [ "$(results "$dir")" = "$(results "$WORK/clean")" ] || fail "results differ after $kills kills"
 [ "$kills" -ge 2 ] || fail "too few kills ($kills) to mean anything"

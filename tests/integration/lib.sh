@@ -11,3 +11,27 @@ result_data() {
     h5dump -m %.17g -g "$g" "$f" | tail -n +2  # 17 digits: every bit of a double
   done
 }
+# Runs `beverloo run SWEEP --dir DIR --workers 2` until it finishes, SIGKILLing the coordinator
+# after a random delay of 300 .. 300 + DELAY_MS ms each round and, every other round on average,
+# one of its workers first. Sets `rounds` and `kills`; fails after 200 rounds. Uses $RANDOM (seed
+# it first) and appends the coordinators' stderr to $WORK/chaos.log.
+run_with_kills() {
+  local sweep=$1 dir=$2 delay_ms=$3 coord delay pid rc
+  rounds=0 kills=0
+  while :; do
+    rounds=$((rounds + 1))
+    [ "$rounds" -le 200 ] || fail "$dir: no completion after 200 rounds"
+    "$BIN" run "$sweep" --dir "$dir" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
+    coord=$!
+    delay=$((RANDOM % delay_ms + 300))
+    sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
+    if [ $((RANDOM % 2)) -eq 0 ]; then
+      pid=$(pgrep -f "worker $dir" | head -n 1 || true)
+      [ -n "$pid" ] && kill -9 "$pid" 2>/dev/null || true
+    fi
+    if kill -9 "$coord" 2>/dev/null; then kills=$((kills + 1)); fi
+    set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
+    [ "$rc" -eq 0 ] && break
+  done
+  pkill -9 -f "worker $dir" 2>/dev/null || true
+}

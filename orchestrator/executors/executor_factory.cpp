@@ -59,6 +59,10 @@ void check_executor_options(const std::string& name, const ExecutorOptionValues&
       if (!also_ours)
         throw ConfigError(flag, "is an option of the " + d.executor + " executor; this run's --executor is " + name);
     }
+    for (const DeclaredOption& d : declared_executor_options())  // its own: every value by kind and range
+      if (d.executor == name && d.option.flag == flag &&
+          (d.option.kind == ExecutorOption::Kind::Integer || d.option.kind == ExecutorOption::Kind::Real))
+        for (const std::string& v : values) option_number(d.option, v);
   }
 }
 

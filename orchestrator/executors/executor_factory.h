@@ -29,7 +29,8 @@ struct DeclaredOption {
 };
 std::vector<DeclaredOption> declared_executor_options();
 /// Throws ConfigError naming the flag when an option of another executor was given (a Slurm
-/// partition for a local run is a mistake, not something to ignore). Call before writing anything.
+/// partition for a local run is a mistake, not something to ignore) or a value is not of its
+/// option's kind and range. Call before writing anything.
 void check_executor_options(const std::string& name, const ExecutorOptionValues& given);
 /// Throws std::invalid_argument for an unknown name, ConfigError for a bad option value.
 std::unique_ptr<Executor> make_executor(const std::string& name, CampaignStore& store, const ExecutorSettings& s);

@@ -66,6 +66,13 @@ TEST(ExecutorOptions, AnotherExecutorsOptionIsRefused) {
     EXPECT_EQ(e.field(), "--partition");
     EXPECT_NE(std::string(e.what()).find("slurm executor"), std::string::npos) << e.what();
   }
+  // its own options' values are checked too, before anything is written
+  try {
+    check_executor_options("slurm", {{"--bundle", {"0"}}});
+    ADD_FAILURE() << "--bundle 0 accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.field(), "--bundle");
+  }
   // the factory lists every declared option with its executor, flags unique per executor
   std::set<std::pair<std::string, std::string>> seen;
   for (const DeclaredOption& d : declared_executor_options())

@@ -58,29 +58,27 @@ int Series::clogged_points() const {
   return n;
 }
 
-CampaignFits fit_campaign(db::Database& db, FlowRate rate) {
-  CampaignRuns runs = read_campaign_runs(db, -1, rate);
+namespace {
+/// The series of a campaign fitted, the imported experiments appended if asked, and then the
+/// beta(lambda) groups: last, because a group points into `series` (appending after it could
+/// move the vector and leave the pointers dangling). Experiments never join a group.
+CampaignFits fitted(db::Database& db, std::int64_t campaign, FlowRate rate, bool with_experiments) {
+  CampaignRuns runs = read_campaign_runs(db, campaign, rate);
   CampaignFits out;
   out.series = std::move(runs.series);
   for (Series& s : out.series) fit_series(s, runs.runs[s.key]);
+  if (with_experiments) add_experiment_series(db, out);
   out.crossovers = crossover_groups(out.series, runs.base_job_of);
-  if (rate == FlowRate::Q) add_experiment_series(db, out);  // the experiments have no Q'
   return out;
 }
+}  // namespace
 
-std::vector<Series> fit_campaign_series(db::Database& db, std::int64_t campaign) {
-  CampaignRuns runs = read_campaign_runs(db, campaign);
-  for (Series& s : runs.series) fit_series(s, runs.runs[s.key]);
-  return std::move(runs.series);
+CampaignFits fit_campaign(db::Database& db, FlowRate rate) {
+  return fitted(db, -1, rate, rate == FlowRate::Q);  // the experiments have no Q'
 }
 
-CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign) {
-  CampaignRuns runs = read_campaign_runs(db, campaign);
-  CampaignFits out;
-  out.series = std::move(runs.series);
-  for (Series& s : out.series) fit_series(s, runs.runs[s.key]);
-  out.crossovers = crossover_groups(out.series, runs.base_job_of);  // point into out.series: moves keep them
-  return out;
+CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign, FlowRate rate) {
+  return fitted(db, campaign, rate, false);
 }
 
 /// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).

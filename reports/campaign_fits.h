@@ -110,11 +110,9 @@ enum class FlowRate { Q, QPrime };
 /// Reads the latest campaign of the database and its experiment series (Q only), and fits them.
 /// Never throws for unfittable data.
 CampaignFits fit_campaign(db::Database& db, FlowRate rate = FlowRate::Q);
-/// The series of one campaign with their Beverloo fits only (no crossovers, no experiments):
-/// what the adaptive planner decides from.
-std::vector<Series> fit_campaign_series(db::Database& db, std::int64_t campaign);
-/// One campaign's series with their Beverloo fits and its beta(lambda) groups (no experiments).
-CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign);
+/// One campaign's series (-1: the latest) with their Beverloo fits and its beta(lambda) groups,
+/// no experiments: what the adaptive planner decides from.
+CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign, FlowRate rate = FlowRate::Q);
 /// The imported experiment series (reports/experiment_series.cpp), appended and fitted.
 void add_experiment_series(db::Database& db, CampaignFits& out);
 

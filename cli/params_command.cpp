@@ -16,27 +16,21 @@ namespace beverloo {
 namespace {
 
 void print_result_fields(const std::string& format) {
-  auto group = [](const ResultField& f) {
-    return f.h5_group == ResultGroup::Result ? "/result" : f.h5_group == ResultGroup::Run ? "/run" : "";
-  };
-  auto sql = [](const ResultField& f) {
-    return f.sql == ResultSql::Column ? "column" : f.sql == ResultSql::Generated ? "generated" : "";
-  };
   if (format == "markdown") {
     std::cout << result_fields_markdown();
   } else if (format == "json") {
     nlohmann::json rows = nlohmann::json::array();
     for (const ResultField& f : result_fields())
       rows.push_back({{"name", f.name}, {"sql_type", f.sql_type()}, {"unit", f.unit}, {"doc", f.doc},
-                      {"result_h5", group(f)}, {"summary_json", f.in_summary}, {"sql", sql(f)},
+                      {"result_h5", h5_group_name(f.h5_group)}, {"summary_json", f.in_summary}, {"sql", sql_kind_name(f.sql)},
                       {"runs_view", f.in_runs_view}});
     std::cout << rows.dump(2) << "\n";
   } else if (format == "schema-defs") {
     std::cerr << "beverloo params: --results has no schema-defs (result fields are not sweep input)\n";
   } else {
     for (const ResultField& f : result_fields())
-      std::cout << std::left << std::setw(27) << f.name << std::setw(19) << f.unit << std::setw(9) << group(f)
-                << std::setw(11) << sql(f) << f.doc << "\n";
+      std::cout << std::left << std::setw(27) << f.name << std::setw(19) << f.unit << std::setw(9) << h5_group_name(f.h5_group)
+                << std::setw(11) << sql_kind_name(f.sql) << f.doc << "\n";
   }
 }
 

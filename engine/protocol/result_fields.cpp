@@ -108,6 +108,14 @@ std::string_view ResultField::sql_type() const {
   return "TEXT";
 }
 
+std::string_view h5_group_name(ResultGroup g) {
+  return g == ResultGroup::Result ? "/result" : g == ResultGroup::Run ? "/run" : "";
+}
+
+std::string_view sql_kind_name(ResultSql s) {
+  return s == ResultSql::Column ? "column" : s == ResultSql::Generated ? "generated" : "";
+}
+
 const std::vector<ResultField>& result_fields() { return kFields; }
 
 const ResultField* find_result_field(std::string_view name) {
@@ -121,9 +129,9 @@ std::string result_fields_markdown() {
   md << "| field | unit | result.h5 | summary.json | SQL (`results`) | `runs` view | meaning |\n"
      << "|---|---|---|---|---|---|---|\n";
   for (const ResultField& f : kFields) {
-    const char* group = f.h5_group == ResultGroup::Result ? "`/result`" : f.h5_group == ResultGroup::Run ? "`/run`" : "";
-    const char* sql = f.sql == ResultSql::Column ? "column" : f.sql == ResultSql::Generated ? "generated" : "";
-    md << "| `" << f.name << "` | " << f.unit << " | " << group << " | " << (f.in_summary ? "yes" : "") << " | " << sql
+    const std::string_view group = h5_group_name(f.h5_group);
+    md << "| `" << f.name << "` | " << f.unit << " | " << (group.empty() ? "" : "`" + std::string(group) + "`") << " | "
+       << (f.in_summary ? "yes" : "") << " | " << sql_kind_name(f.sql)
        << " | " << (f.in_runs_view ? "yes" : "") << " | " << f.doc << " |\n";
   }
   return md.str();

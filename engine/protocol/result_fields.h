@@ -57,6 +57,10 @@ struct ResultField {
   std::string_view sql_type() const;
 };
 
+/// "/result", "/run" or "" (result.h5's group); "column", "generated" or "" (the database).
+std::string_view h5_group_name(ResultGroup g);
+std::string_view sql_kind_name(ResultSql s);
+
 /// Every scalar result field, in the order of docs/database.md.
 const std::vector<ResultField>& result_fields();
 /// The row of a name, or nullptr.

@@ -52,17 +52,21 @@ std::vector<DeclaredOption> declared_executor_options() {
 void check_executor_options(const std::string& name, const ExecutorOptionValues& given) {
   for (const auto& [flag, values] : given) {
     if (values.empty()) continue;
-    for (const DeclaredOption& d : declared_executor_options()) {
-      if (d.option.flag != flag || d.executor == name) continue;
-      bool also_ours = false;  // two executors may share a flag
-      for (const DeclaredOption& e : declared_executor_options()) also_ours |= e.executor == name && e.option.flag == flag;
-      if (!also_ours)
-        throw ConfigError(flag, "is an option of the " + d.executor + " executor; this run's --executor is " + name);
+    const ExecutorOption* ours = nullptr;  // the chosen executor's row of this flag
+    std::string other;                     // else the first executor that declares it
+    for (const Row& row : registry())
+      for (const ExecutorOption& o : row.options)
+        if (o.flag == flag) {
+          if (row.name == name) ours = &o;
+          else if (other.empty()) other = row.name;
+        }
+    if (!ours) {
+      if (!other.empty())
+        throw ConfigError(flag, "is an option of the " + other + " executor; this run's --executor is " + name);
+      continue;
     }
-    for (const DeclaredOption& d : declared_executor_options())  // its own: every value by kind and range
-      if (d.executor == name && d.option.flag == flag &&
-          (d.option.kind == ExecutorOption::Kind::Integer || d.option.kind == ExecutorOption::Kind::Real))
-        for (const std::string& v : values) option_number(d.option, v);
+    if (ours->kind == ExecutorOption::Kind::Integer || ours->kind == ExecutorOption::Kind::Real)
+      for (const std::string& v : values) option_number(*ours, v);  // by kind and range
   }
 }
 

@@ -35,3 +35,12 @@ run_with_kills() {
   done
   pkill -9 -f "worker $dir" 2>/dev/null || true
 }
+# `beverloo run BAD.json` must exit 2 with a message naming FIELD and create no campaign in
+# $WORK/bad. Usage: refused_without_writing BAD.json FIELD WHAT (WHAT: for the failure message).
+refused_without_writing() {
+  local bad=$1 field=$2 what=$3 rc
+  set +e; "$BIN" run "$bad" --dir "$WORK/bad" --progress quiet 2> "$WORK/err"; rc=$?; set -e
+  [ "$rc" -eq 2 ] || fail "$what: exit $rc, expected 2"
+  grep -q "$field" "$WORK/err" || fail "$what: message does not name $field: $(cat "$WORK/err")"
+  [ ! -e "$WORK/bad/campaign.sqlite" ] || fail "$what: a campaign was created"
+}

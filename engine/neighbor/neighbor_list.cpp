@@ -28,7 +28,7 @@ void NeighborList<D>::bin(const ParticleState<D>& s) {
   double max_extra = 0;
   if (extra_)
     for (int i = 0; i < n; ++i) max_extra = std::max(max_extra, (*extra_)[i]);
-  double cell = std::max(s.sp.sigma[0], s.sp.sigma[1]) + 2 * max_extra + skin_;
+  double cell = std::max(s.sp.sigma[0], s.sp.sigma[1]) + max_extra + skin_;
   long total = 1;
   dims_ = {1, 1, 1};
   for (;;) {  // a blown-up particle far away must not make the grid huge: coarsen instead
@@ -254,7 +254,7 @@ void NeighborList<D>::build_rows(const ParticleState<D>& s, const Hopper<D>& hop
           const double d2 = (xi - cx[k]).squaredNorm();
           bool listed;
           if constexpr (kExtra) {
-            const double cut = 0.5 * (s.sp.sigma[si] + s.sp.sigma[csp[k]]) + extra_i + cextra[k] + skin_;
+            const double cut = 0.5 * (s.sp.sigma[si] + s.sp.sigma[csp[k]]) + std::max(extra_i, cextra[k]) + skin_;
             listed = d2 < cut * cut;
           } else {
             listed = d2 < cut2.c[si][csp[k]];
@@ -449,7 +449,7 @@ void NeighborList<D>::relocate(int i, const ParticleState<D>& s, const Hopper<D>
   const int si = s.species[i];
   for (int j = 0; j < n; ++j) {
     if (j == i || excluded(i, j)) continue;
-    const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + extra(i) + extra(j) + skin_;
+    const double c = 0.5 * (s.sp.sigma[si] + s.sp.sigma[s.species[j]]) + std::max(extra(i), extra(j)) + skin_;
     if ((x_ref_[i] - x_ref_[j]).squaredNorm() >= c * c) continue;
     const int row = std::min(i, j), other = std::max(i, j);
     if (row_end_[row] == row_start_[row + 1]) {  // no room left: rebuild at the next update

@@ -128,9 +128,11 @@ class NeighborList {
     exclude_ring_ = first ? ring : -1;
     force_ = true;
   }
-  /// Per-item extra reach (nullptr: none): pairs are listed within sigma_ij + extra_i +
-  /// extra_j + skin. The smooth DP contact finds an edge from the nearer of its end vertices,
-  /// so each vertex reaches half its longest edge further than its contact diameter. The
+  /// Per-item extra reach (nullptr: none): pairs are listed within sigma_ij +
+  /// max(extra_i, extra_j) + skin. The smooth DP contact finds an edge from the nearer of its
+  /// end vertices, so each vertex reaches half its longest edge further than its contact
+  /// diameter; a pair (i, j) is evaluated for the edges at i and those at j, so it needs the
+  /// larger of the two reaches, not their sum (the sum listed ~2.4 times the pairs). The
   /// vector must outlive the list; whoever changes it must invalidate() the list.
   /// Items of species k feel the walls within diameters[k] / 2 (instead of sigma[k] / 2): the
   /// wall masks reach that far (plus the skin). DP vertices whose wall contact is wider than

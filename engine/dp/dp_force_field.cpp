@@ -28,6 +28,7 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
       corners_(hopper, p, shape, c.E_w),
       hopper_(hopper),
       cores_(hopper, shape.wall_thickness) {
+  edge_widths_ = {shape.delta[0], shape.delta[1]};
   if (shape.smooth) {
     // Edges of one polygon repel its own vertices too (self-contact; not ring neighbours, whose
     // edges meet at them): nothing else keeps a soft polygon (K_l ~ 1, K_b ~ 1e-2) from folding
@@ -47,17 +48,14 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     rough_->set_friction_groups(&p.owner);
     rough_core_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_edge_core(list_, p, shape, E_c));
     rough_fold_ = std::make_unique<DpSmoothContact>(DpSmoothContact::rough_fold_barrier(list_, p, shape, E_c));
-    // the disks' list reach (l0) already covers a core contact within l0 - l0/2 of a vertex
-    const auto core = DpSmoothContact::core_widths(shape);
-    reach_covered_ = std::min(shape.delta[0] - core[0], shape.delta[1] - core[1]);
+    // the core's edges are narrower than the disks the list is built for
+    edge_widths_ = DpSmoothContact::core_widths(shape);
   }
-  // A vertex within the edge width of an edge is within |edge|/2 of the edge's nearer end
-  // vertex plus that width (the foot of the perpendicular, or the corner, is at most |edge|/2
-  // from it): each vertex's list reach covers half the bound of its edges. Until the first
-  // compute() sees the edges: the floor of the large species, which covers near-regular
+  // Each vertex's list reach covers half the bound of its edges (edge_reach()). Until the
+  // first compute() sees the edges: the floor of the large species, which covers near-regular
   // polygons of both species (lists built directly, as some tests do).
   edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
-  vertex_reach_.assign(p.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape.l0[1] - reach_covered_));
+  vertex_reach_.assign(p.vertices(), edge_reach(0.5 * kEdgeBoundFloor * shape.l0[1]));
   list_.set_extra_reach(&vertex_reach_);
   corner_edges_.reserve(p.vertices());
   fold_vertices_.reserve(p.vertices());
@@ -82,9 +80,25 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   }
 }
 
+double DpForceField::edge_reach(double half_bound) const {
+  // A vertex b within the width w_ab of edge a -> next(a), with a the edge's nearer end, is
+  // within sqrt(w_ab^2 + |edge|^2 / 4) of a: the foot of its perpendicular (or, past the end,
+  // the corner a itself) is at most |edge|/2 from a along the edge, and b at most w_ab from
+  // it across (the contact's row test uses the same bound). The list already reaches the
+  // pair's diameter d_ab; the extra covers the rest, for the species pair that needs most.
+  double extra = 0;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      const double w = 0.5 * (edge_widths_[a] + edge_widths_[b]);
+      const double d = 0.5 * (shape_.delta[a] + shape_.delta[b]);
+      extra = std::max(extra, std::sqrt(w * w + half_bound * half_bound) - d);
+    }
+  return extra;
+}
+
 void DpForceField::topology_changed() {
   edge_bound_.assign(poly_.vertices(), kEdgeBoundFloor * shape_.l0[1]);
-  vertex_reach_.assign(poly_.vertices(), std::max(0.0, 0.5 * kEdgeBoundFloor * shape_.l0[1] - reach_covered_));
+  vertex_reach_.assign(poly_.vertices(), edge_reach(0.5 * kEdgeBoundFloor * shape_.l0[1]));
   list_.invalidate();
 }
 
@@ -448,7 +462,7 @@ void DpForceField::reset_edge_bounds(const ParticleState<2>& s) {
     edge_bound_[i] = std::max(kEdgeBoundGrowth * len, kEdgeBoundFloor * shape_.l0[s.species[i]]);
   }
   for (int i = 0; i < n; ++i)
-    vertex_reach_[i] = std::max(0.0, 0.5 * std::max(edge_bound_[i], edge_bound_[poly_.prev[i]]) - reach_covered_);
+    vertex_reach_[i] = edge_reach(0.5 * std::max(edge_bound_[i], edge_bound_[poly_.prev[i]]));
   list_.invalidate();
 }
 

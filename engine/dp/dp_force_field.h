@@ -65,9 +65,9 @@ class DpForceField {
   /// Longest edge at the last evaluation.
   double longest_edge() const { return segments_.longest_edge(); }
   /// The length up to which edge i is searched for contacts of the smooth edges or the rough
-  /// edge core, from the nearer of its end vertices: vertex i's list reach is half the longer
-  /// of its two edges' bounds beyond the edge width (for rough vertex disks, only what that
-  /// exceeds the disk's reach). Bounds are set to kEdgeBoundGrowth times the edge's
+  /// edge core, from the nearer of its end vertices: vertex i's list reach covers the edge
+  /// width and half the longer of its two edges' bounds (edge_reach(); for rough vertex disks,
+  /// only what that exceeds the disk's reach). Bounds are set to kEdgeBoundGrowth times the edge's
   /// length (at least kEdgeBoundFloor l0) whenever some edge outgrows its bound; only the
   /// list's reach depends on them, not the forces, so any history of them gives bit-identical
   /// forces.
@@ -109,7 +109,10 @@ class DpForceField {
   const PolygonSet& poly_;
   std::vector<double> edge_bound_;    ///< per edge i -> next(i)
   std::vector<double> vertex_reach_;  ///< per vertex: extra list reach for its two edges
-  double reach_covered_ = 0;          ///< edge reach the list's vertex diameters already give
+  /// The edges' contact widths per species: the smooth edges' (shape.delta), the rough core's.
+  std::array<double, 2> edge_widths_;
+  /// The list reach a vertex needs beyond the pair diameter for edges up to 2 half_bound long.
+  double edge_reach(double half_bound) const;
   NeighborList<2> list_;
   DpArea area_;
   DpSegmentLength segments_;

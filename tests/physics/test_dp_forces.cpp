@@ -274,6 +274,29 @@ TEST(DpForces, SmoothContactSearchFollowsStretchedEdges) {
   EXPECT_LT(ff.edge_bound(fx.poly.first[1]), 2 * l0);  // the other polygon's edges keep their reach
 }
 
+TEST(DpForces, SmoothContactListReachesAVertexAtTheMiddleOfARegularEdge) {
+  // The farthest a vertex in contact can be from an edge's nearer end: at the middle of the
+  // edge, just inside the width, sqrt(w^2 + |e|^2/4) away. With a skin of almost nothing the
+  // list's own reach (DpForceField::edge_reach) must cover it for every species pair.
+  for (int edge_owner : {0, 1}) {
+    SimConfig c = dp_config("dp_smooth", 2);
+    c.skin = 1e-9;
+    DpFixture fx(c, {Vec<2>(-4, 5), Vec<2>(4, 5)}, 0.0, 3);
+    const Hopper<2> h = make_hopper<2>(fx.c);
+    DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+    const int a = fx.poly.first[edge_owner], an = fx.poly.next[a];
+    const int b = fx.poly.first[1 - edge_owner] + 5;
+    const Vec<2> e = fx.verts.x[an] - fx.verts.x[a];
+    const Vec<2> normal(e[1] / e.norm(), -e[0] / e.norm());
+    const double w = 0.5 * (fx.shape.delta[edge_owner] + fx.shape.delta[1 - edge_owner]);
+    fx.verts.x[b] = fx.verts.x[a] + 0.5 * e + 0.99 * w * normal;
+    const ForceReport r = ff.compute(fx.verts);
+    const double expected = brute_force_smooth_energy(fx, fx.c.dp.E_c);
+    ASSERT_GT(expected, 0);
+    EXPECT_NEAR(r.U_contact, expected, 1e-10 * expected) << "edge of species " << edge_owner;
+  }
+}
+
 /// Rough edge core, independently: every edge against every vertex of another polygon or of
 /// its own polygon but the edge's ends and their other ring neighbours, slab only (0 <= t <= 1).
 double brute_force_rough_core_energy(const DpFixture& fx, double eps_c) {

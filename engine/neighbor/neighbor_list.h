@@ -130,9 +130,10 @@ class NeighborList {
   }
   /// Per-item extra reach (nullptr: none): pairs are listed within sigma_ij +
   /// max(extra_i, extra_j) + skin. The smooth DP contact finds an edge from the nearer of its
-  /// end vertices, so each vertex reaches half its longest edge further than its contact
-  /// diameter; a pair (i, j) is evaluated for the edges at i and those at j, so it needs the
-  /// larger of the two reaches, not their sum (the sum listed ~2.4 times the pairs). The
+  /// end vertices, so each vertex reaches beyond its contact diameter as far as half its
+  /// longest edge requires (DpForceField::edge_reach); a pair (i, j) is evaluated for the
+  /// edges at i and those at j, so it needs the larger of the two reaches, not their sum (with
+  /// the sum the authors' smooth set searched about 2.4 times the area around a vertex). The
   /// vector must outlive the list; whoever changes it must invalidate() the list.
   /// Items of species k feel the walls within diameters[k] / 2 (instead of sigma[k] / 2): the
   /// wall masks reach that far (plus the skin). DP vertices whose wall contact is wider than

@@ -31,7 +31,7 @@ enum class FailureClass {
 
 /// What happens to the job after an attempt ends this way.
 enum class RetryPolicy {
-  Never,     ///< the job fails at once (its parameters are wrong)
+  Never,     ///< the job fails at once (its parameters are wrong, or a retry would repeat it bit for bit)
   Budgeted,  ///< pending again while the job's retry budget lasts (science failures)
   Free,      ///< pending again, resumed from its checkpoint, budget untouched (infrastructure)
   Cancel,    ///< the job is cancelled (a user cancelled it in the scheduler)

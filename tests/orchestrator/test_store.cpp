@@ -119,14 +119,15 @@ TEST_F(StoreTest, RetryPolicyChargesScienceFailuresOnly) {
     EXPECT_EQ(store.record_failure(j->attempt_id, j->key, FailureClass::Killed, 137, "killed", max_retries), "pending");
   }
   EXPECT_EQ(db.scalar_int("SELECT max(retries_used) FROM jobs"), 0);
-  // blow-ups: one retry, then failed
+  // i/o failures and crashes: one retry, then failed
   auto j = store.claim_next(id, "local", "h");
-  EXPECT_EQ(store.record_failure(j->attempt_id, j->key, FailureClass::BlowUp, 3, "NaN", max_retries), "pending");
+  EXPECT_EQ(store.record_failure(j->attempt_id, j->key, FailureClass::Io, 4, "write", max_retries), "pending");
+  j = store.claim_next(id, "local", "h");
+  EXPECT_EQ(store.record_failure(j->attempt_id, j->key, FailureClass::Internal, 1, "bug", max_retries), "failed");
+  // invalid parameters and blow-ups (a retry would blow up at the same step): failed at once
   j = store.claim_next(id, "local", "h");
   EXPECT_EQ(store.record_failure(j->attempt_id, j->key, FailureClass::BlowUp, 3, "NaN", max_retries), "failed");
-  // invalid parameters: failed at once
-  j = store.claim_next(id, "local", "h");
-  EXPECT_EQ(store.record_failure(j->attempt_id, j->key, FailureClass::InvalidParameters, 2, "bad", max_retries), "failed");
+  EXPECT_EQ(db.scalar_int("SELECT count(*) FROM jobs WHERE state = 'failed' AND retries_used = 0"), 1);
   EXPECT_EQ(store.counts(id).failed, 2);
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM attempts WHERE failure_class = 'killed'"), 5);
   EXPECT_EQ(store.retry(id, false), 2);

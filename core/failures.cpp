@@ -6,7 +6,7 @@ namespace beverloo {
 namespace {
 using R = RetryPolicy;
 using F = FailureClass;
-constexpr std::array<FailureInfo, 13> kTable = {{
+constexpr std::array<FailureInfo, 14> kTable = {{
     {F::InvalidParameters, "invalid_parameters", exit_code::kConfig, "failed", R::Never},
     // The engine is deterministic: a retry resumes the same checkpoint with the same binary and
     // blows up at the same step, bit for bit, so it would only spend CPU (Fig. 6's steep funnels:
@@ -18,6 +18,8 @@ constexpr std::array<FailureInfo, 13> kTable = {{
     {F::Interrupted, "interrupted", exit_code::kInterrupted, "interrupted", R::Free},
     {F::Lost, "lost", exit_code::kLockBusy, "lost", R::Free},
     {F::Internal, "internal", exit_code::kInternal, "failed", R::Budgeted},
+    // an "io" failure the coordinator finds was for want of room: the job waits, its budget untouched
+    {F::DiskFull, "disk_full", -1, "failed", R::Free},
     {F::Cancelled, "cancelled", -1, "cancelled", R::Cancel},
     {F::Preempted, "preempted", -1, "interrupted", R::Free},
     {F::NodeFailure, "node_failure", -1, "lost", R::Free},

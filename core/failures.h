@@ -25,6 +25,7 @@ inline constexpr int kLockBusy = 75;    ///< a worker found its job locked by an
 
 enum class FailureClass {
   InvalidParameters, BlowUp, Killed, Timeout, Io, Interrupted, Lost, Internal,
+  DiskFull,  ///< an I/O failure for want of room (disk_space.h): the coordinator stops
   // what Slurm can end an attempt with (slurm_output.h has the Slurm state table)
   Cancelled, Preempted, NodeFailure, OutOfMemory, Stalled
 };

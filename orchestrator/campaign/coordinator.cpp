@@ -1,6 +1,7 @@
 #include "coordinator.h"
 #include "core/atomic_file.h"
 #include "core/cpus.h"
+#include "core/disk_space.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -64,6 +65,7 @@ class Coordinator {
     initial_ = store_.counts(campaign_);
     while (true) {
       if (stop->load()) return shutdown();
+      if (!disk_full_.empty()) return stop_for_full_disk();
       std::vector<ClaimedJob> batch;  // fill free slots (the Slurm executor submits them as arrays)
       for (int free = ex_.free_slots(); free > 0; --free) {
         auto job = store_.claim_next(campaign_, ex_.name(), host_);
@@ -74,8 +76,10 @@ class Coordinator {
           // the job's directory cannot be made or written: this attempt fails as an I/O failure
           // (retried within the budget, then failed with this reason); the campaign goes on
           const std::string why = std::string("cannot prepare the job directory: ") + e.what();
-          const std::string state = store_.record_failure(job->attempt_id, job->key, FailureClass::Io, -1, why, o_.max_retries);
-          log_event(*job, std::string(to_string(FailureClass::Io)) + " -> " + state, why);
+          const FailureClass cls = io_or_disk_full(job_dir(job->dir), why);
+          const std::string state = store_.record_failure(job->attempt_id, job->key, cls, -1, why, o_.max_retries);
+          log_event(*job, std::string(to_string(cls)) + " -> " + state, why);
+          if (cls == FailureClass::DiskFull) break;  // claim nothing more: the loop stops
           continue;
         }
         batch.push_back(*job);
@@ -183,6 +187,7 @@ class Coordinator {
       status = exit->signaled ? 128 + exit->code : exit->code;
       message = exit->signaled ? "worker killed by signal " + std::to_string(exit->code) : last_log_line(dir);
     }
+    if (cls == FailureClass::Io) cls = io_or_disk_full(dir, message);
     if (timed_out_.erase(job.attempt_id) && cls == FailureClass::Interrupted) {
       cls = FailureClass::Timeout;
       message = "exceeded the job timeout of " + std::to_string(o_.job_timeout_s) + " s; will resume from its checkpoint";
@@ -193,6 +198,25 @@ class Coordinator {
     }
     const std::string state = store_.record_failure(job.attempt_id, job.key, cls, status, message, o_.max_retries);
     log_event(job, std::string(to_string(cls)) + " -> " + state, message);
+  }
+
+  /// An I/O failure is disk_full when the file system holding `dir` has no room (core/disk_space.h):
+  /// the job is not charged, and the campaign stops claiming (disk_full_) until someone makes room.
+  FailureClass io_or_disk_full(const std::string& dir, const std::string& message) {
+    if (!no_space_left(dir, message)) return FailureClass::Io;
+    if (disk_full_.empty()) disk_full_ = dir;
+    return FailureClass::DiskFull;
+  }
+
+  /// Stops the workers (each writes a checkpoint if it still can) and ends the run with the
+  /// I/O exit code; the same command resumes the campaign once there is room.
+  int stop_for_full_disk() {
+    std::fprintf(stderr,
+                 "\n[beverloo] stopping: the disk is full (no space left for %s); make room and run the same "
+                 "command again: the jobs resume from their checkpoints\n",
+                 terminal_safe(disk_full_).c_str());
+    for (const WorkerExit& e : ex_.stop_all()) finished(e);
+    return exit_code::kIo;
   }
 
   static FailureClass class_of(const std::string& failure_class) {
@@ -288,6 +312,7 @@ class Coordinator {
   std::set<std::int64_t> timed_out_;  // attempts stopped for exceeding --job-timeout
   std::map<std::string, int> infra_failures_;
   bool planner_failed_ = false;
+  std::string disk_full_;  // a directory an attempt could not write for want of room: stop claiming
   StateCounts initial_;
   Clock::time_point last_progress_{};
 };

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A disk that fills mid-campaign (issue 31.9): the campaign directory on a small tmpfs. The
 # coordinator stops with the I/O exit code (4) and says so; the database passes SQLite's
-# integrity check; no temporary file is left behind. Given room again, the same command
+# integrity check; no temporary file is left behind; no job is charged a retry for it (a
+# worker's write that failed for want of room is disk_full, free, and stops the claims). Given room again, the same command
 # finishes the campaign: every job done once, results bit-identical to a campaign that never
 # lacked room. Needs root (mount); skipped (exit 77) without it.
 source "$(dirname "$0")/lib.sh"
@@ -27,6 +28,9 @@ done_before=$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM jobs WHERE
 wait_workers() { for _ in $(seq 100); do pgrep -f "worker $DISK" > /dev/null || return 0; sleep 0.1; done; }
 wait_workers  # a worker outlives its coordinator until its own write fails or it ends
 [ "$(sqlite3 "$DISK/c/campaign.sqlite" "PRAGMA integrity_check")" = ok ] || fail "the database is damaged"
+# a write that failed for want of room is disk_full, not io: no job paid from its retry budget
+charged=$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM jobs WHERE retries_used > 0")
+[ "$charged" -eq 0 ] || fail "$charged job(s) charged a retry for the full disk: $(sqlite3 "$DISK/c/campaign.sqlite" "SELECT failure_class, message FROM attempts WHERE failure_class IS NOT NULL LIMIT 3")"
 left=$(find "$DISK" -name '*.tmp*' | head -3)
 [ -z "$left" ] || fail "temporary files left on the full disk: $left"
 echo "ok  disk full with $done_before of 8 jobs done: exit 4, the database intact, no temporary file left"

@@ -1,10 +1,13 @@
 // The one failure table (core/failures.h): every class has its own name, its exit code maps
-// back to it, and the retry policy is the one the store applies.
+// back to it, and the retry policy is the one the store applies; and how a full disk is told.
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cstring>
 #include <set>
 #include <string>
 
+#include "core/disk_space.h"
 #include "core/failures.h"
 
 namespace beverloo {
@@ -32,11 +35,20 @@ TEST(FailureTable, SciencePaysFromTheBudgetInfrastructureDoesNot) {
   EXPECT_EQ(failure_info(FailureClass::BlowUp).retry, RetryPolicy::Never);  // deterministic: a retry repeats it
   EXPECT_EQ(failure_info(FailureClass::Io).retry, RetryPolicy::Budgeted);
   for (FailureClass c : {FailureClass::Killed, FailureClass::Lost, FailureClass::Interrupted, FailureClass::Timeout,
-                         FailureClass::Preempted, FailureClass::NodeFailure, FailureClass::Stalled})
+                         FailureClass::Preempted, FailureClass::NodeFailure, FailureClass::Stalled, FailureClass::DiskFull})
     EXPECT_TRUE(is_infrastructure(c)) << to_string(c);
   EXPECT_EQ(failure_info(FailureClass::Cancelled).retry, RetryPolicy::Cancel);
   EXPECT_EQ(failure_info(FailureClass::Interrupted).exit_code, exit_code::kInterrupted);
   EXPECT_EQ(failure_info(FailureClass::Lost).exit_code, exit_code::kLockBusy);
+}
+
+TEST(DiskSpace, AFullDiskIsToldByItsMessageOrItsFreeSpace) {
+  EXPECT_TRUE(no_space_left("/tmp", std::string("cannot write checkpoint.h5.tmp: ") + std::strerror(ENOSPC)));
+  EXPECT_TRUE(no_space_left("/tmp", "database or disk is full"));
+  // a file system with room: an I/O failure there is not for want of room
+  EXPECT_FALSE(no_space_left("/tmp", "permission denied"));
+  // a directory that could not be made: its nearest existing parent's file system is asked
+  EXPECT_FALSE(no_space_left("/tmp/beverloo-no-such-dir/jobs/abc", "cannot create directory"));
 }
 
 }  // namespace

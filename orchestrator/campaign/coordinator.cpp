@@ -74,7 +74,8 @@ class Coordinator {
           write_spec(*job);
         } catch (const std::exception& e) {
           // the job's directory cannot be made or written: this attempt fails as an I/O failure
-          // (retried within the budget, then failed with this reason); the campaign goes on
+          // (retried within the budget, then failed with this reason) and the campaign goes on;
+          // for want of room it is disk_full, free, and the campaign stops
           const std::string why = std::string("cannot prepare the job directory: ") + e.what();
           const FailureClass cls = io_or_disk_full(job_dir(job->dir), why);
           const std::string state = store_.record_failure(job->attempt_id, job->key, cls, -1, why, o_.max_retries);

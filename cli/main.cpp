@@ -6,7 +6,7 @@
 #include "core/failures.h"
 
 int main(int argc, char** argv) {
-  beverloo::h5::silence_errors();
+  beverloo::h5::init_library();
   CLI::App app{"beverloo " BEVERLOO_VERSION " - hopper flows of soft and deformable particles"};
   app.require_subcommand(1);
   app.set_version_flag("--version", BEVERLOO_VERSION);

@@ -46,7 +46,7 @@ void HopperRun<D>::save_checkpoint(const std::string& target) const {
     H5Handle o = h5::create_group(f, "observables");
     h5::write(o, "block_scalars", obs_.block_scalars);
     h5::write(o, "block_profile", obs_.block_profile);
-    H5Fflush(f, H5F_SCOPE_GLOBAL);
+    h5::flush(f, file.path());  // a flush that failed leaves an incomplete file: not committed
   }
   file.commit();
 }

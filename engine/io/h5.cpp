@@ -67,12 +67,18 @@ T read_scalar_attr(hid_t loc, const std::string& name) {
 
 namespace h5 {
 
-void silence_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+void init_library() {
+  H5dont_atexit();  // must come before every other HDF5 call
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
 
 H5Handle create_file(const std::string& path) {
   H5Handle f(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (f.id() < 0) fail("cannot create " + path);
   return f;
+}
+void flush(hid_t file, const std::string& path) {
+  if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail("cannot write " + path + " (no space left on the device?)");
 }
 H5Handle open_file(const std::string& path, bool writable) {
   H5Handle f(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);

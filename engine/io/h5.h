@@ -42,6 +42,9 @@ class H5Handle {
 
 namespace h5 {
 H5Handle create_file(const std::string& path);  ///< truncates
+/// Writes everything of `file` to the disk; throws IoError naming `path` if that fails (a full
+/// disk): a file whose flush failed is incomplete and must not be committed under its name.
+void flush(hid_t file, const std::string& path);
 H5Handle open_file(const std::string& path, bool writable = false);
 H5Handle create_group(hid_t loc, const std::string& name);
 H5Handle open_group(hid_t loc, const std::string& name);
@@ -66,8 +69,13 @@ double attr_double(hid_t loc, const std::string& name);
 std::int64_t attr_int64(hid_t loc, const std::string& name);
 std::string attr_string(hid_t loc, const std::string& name);
 
-/// Makes HDF5 quiet (we report errors ourselves); call once.
-void silence_errors();
+/// Call once, before any other HDF5 use: HDF5 installs no clean-up at exit, and is quiet (we
+/// report errors ourselves). Why no clean-up: a write that failed for want of room can leave a
+/// file HDF5 could not close, and its clean-up at exit closes it again and crashes
+/// (H5F__close_cb in H5_term_library, HDF5 1.10; a `simulate` on a full tmpfs ended with
+/// SIGSEGV instead of its exit code, and so did campaign workers). Our files are closed by their
+/// handles and written under temporary names, so the clean-up had nothing of ours to do.
+void init_library();
 }  // namespace h5
 
 }  // namespace beverloo

@@ -108,7 +108,7 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
       h5::write(g, "detected_time", detected);
     }
     write_result_group(f, "run", ResultGroup::Run, r);
-    H5Fflush(f, H5F_SCOPE_GLOBAL);
+    h5::flush(f, file.path());  // a flush that failed leaves an incomplete file: not committed
   }
   file.commit();
 }

@@ -16,6 +16,23 @@ cat > "$WORK/sweep.json" <<'J'
  "run": {"t_max": 200, "target_rel_err": 1e-9, "min_window": 20, "checkpoint_interval": 2},
  "sweep": {"product": [{"lambda": [0.1, "inf"]}, {"w": [3, 4, 5, 6]}]}}
 J
+# One flow on file systems too small for its files: it ends with exit 0 or 4 (never a signal:
+# HDF5's clean-up at exit crashed after a failed write) and leaves no file under its own name
+# that cannot be read (a checkpoint whose flush failed was committed before 2026-12-04).
+echo '{"N": 300, "W": 12, "E_sp": 100, "w": 4, "zeta": 0.3, "mu": 0, "run": {"t_max": 200, "target_rel_err": 1e-9, "min_window": 20, "checkpoint_interval": 2}}' > "$WORK/one.json"
+SMALL=$WORK/small
+mkdir -p "$SMALL"
+for size in 40k 80k 120k 150k 180k 250k; do
+  mount -t tmpfs -o size=$size tmpfs "$SMALL"
+  set +e; "$BIN" simulate "$WORK/one.json" -o "$SMALL/o" --progress quiet > /dev/null 2> "$WORK/small.err"; rc=$?; set -e
+  for f in "$SMALL"/o/checkpoint.h5 "$SMALL"/o/result.h5; do
+    [ ! -f "$f" ] || h5dump -H "$f" > /dev/null 2>&1 || { umount "$SMALL"; fail "$size: $(basename "$f") committed but unreadable (exit $rc)"; }
+  done
+  umount "$SMALL"
+  [ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || fail "$size: simulate ended with $rc, expected 0 or 4: $(tail -1 "$WORK/small.err")"
+done
+echo "ok  one flow on file systems of 40k .. 250k: exit 0 or 4, no unreadable file committed"
+
 results() { sqlite3 "$1/campaign.sqlite" "SELECT job_key, status, printf('%!.17g|%!.17g', Q, Q_err), steps FROM results ORDER BY job_key"; }
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> /dev/null
 clean=$(results "$WORK/clean")
@@ -28,6 +45,9 @@ done_before=$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM jobs WHERE
 wait_workers() { for _ in $(seq 100); do pgrep -f "worker $DISK" > /dev/null || return 0; sleep 0.1; done; }
 wait_workers  # a worker outlives its coordinator until its own write fails or it ends
 [ "$(sqlite3 "$DISK/c/campaign.sqlite" "PRAGMA integrity_check")" = ok ] || fail "the database is damaged"
+# no worker crashed on the way out (HDF5's clean-up at exit after a failed write: cli/main.cpp)
+crashed=$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM attempts WHERE message LIKE '%killed by signal%'")
+[ "$crashed" -eq 0 ] || fail "$crashed worker(s) died of a signal on the full disk"
 # a write that failed for want of room is disk_full, not io: no job paid from its retry budget
 charged=$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM jobs WHERE retries_used > 0")
 [ "$charged" -eq 0 ] || fail "$charged job(s) charged a retry for the full disk: $(sqlite3 "$DISK/c/campaign.sqlite" "SELECT failure_class, message FROM attempts WHERE failure_class IS NOT NULL LIMIT 3")"

@@ -8,8 +8,7 @@
 namespace beverloo {
 
 bool no_space_left(const std::string& path, std::string_view message) {
-  for (std::string_view says : {std::string_view(std::strerror(ENOSPC)), std::string_view("no space left"),
-                                 std::string_view("disk is full")})
+  for (std::string_view says : {std::string_view(std::strerror(ENOSPC)), std::string_view("disk is full")})
     if (message.find(says) != std::string_view::npos) return true;
   // the job's directory may be the one that could not be made: ask its nearest existing parent
   std::filesystem::path p = path.empty() ? std::filesystem::path(".") : std::filesystem::path(path);

@@ -78,7 +78,9 @@ H5Handle create_file(const std::string& path) {
   return f;
 }
 void flush(hid_t file, const std::string& path) {
-  if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail("cannot write " + path + " (no space left on the device?)");
+  errno = 0;
+  if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0)  // HDF5's write() leaves its errno (ENOSPC: a full disk)
+    fail("cannot write " + path + (errno ? std::string(": ") + std::strerror(errno) : std::string()));
 }
 H5Handle open_file(const std::string& path, bool writable) {
   H5Handle f(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);

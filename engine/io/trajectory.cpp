@@ -114,7 +114,7 @@ void H5mdTrajectory<D>::create(const std::string& path, const SimConfig& c, cons
   h5::attr(params, "theta_w_left_deg", c.theta_w_left_deg);
   h5::attr(params, "theta_w_right_deg", c.theta_w_right_deg);
   h5::attr(params, "job", c.to_json().dump());
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  h5::flush(file_, "trajectory.h5");  // a frame that did not reach the disk is an I/O error
 }
 
 template <int D>
@@ -127,7 +127,7 @@ void H5mdTrajectory<D>::write_frame(const ParticleState<D>& s, double time) {
   append(file_, "particles/all/position/step", H5T_NATIVE_INT64, &step, frames_);
   append(file_, "particles/all/position/time", H5T_NATIVE_DOUBLE, &time, frames_);
   ++frames_;
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  h5::flush(file_, "trajectory.h5");  // a frame that did not reach the disk is an I/O error
 }
 
 template class H5mdTrajectory<2>;

@@ -72,15 +72,21 @@ void init_library() {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
 }
 
+namespace {
+/// ": <the system's reason>" after a failed HDF5 call that reached the system (HDF5 leaves the
+/// errno of its open() or write(): ENOSPC on a full disk), else nothing.
+std::string system_reason() { return errno ? std::string(": ") + std::strerror(errno) : std::string(); }
+}  // namespace
+
 H5Handle create_file(const std::string& path) {
+  errno = 0;
   H5Handle f(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-  if (f.id() < 0) fail("cannot create " + path);
+  if (f.id() < 0) fail("cannot create " + path + system_reason());
   return f;
 }
 void flush(hid_t file, const std::string& path) {
   errno = 0;
-  if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0)  // HDF5's write() leaves its errno (ENOSPC: a full disk)
-    fail("cannot write " + path + (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+  if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) fail("cannot write " + path + system_reason());
 }
 H5Handle open_file(const std::string& path, bool writable) {
   H5Handle f(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);

@@ -15,8 +15,8 @@ namespace beverloo {
 inline constexpr std::uint64_t kFullBelowBytes = std::uint64_t{1} << 20;
 
 /// True if `message` says there is no space (strerror(ENOSPC), which our file writes and HDF5
-/// flushes append; SQLite's "database or disk is full"), or the file system holding `path` (or its nearest existing parent) has less than
-/// kFullBelowBytes available.
+/// flushes append; SQLite's "database or disk is full"), or the file system holding `path` (or
+/// its nearest existing parent) has less than kFullBelowBytes available.
 bool no_space_left(const std::string& path, std::string_view message);
 
 }  // namespace beverloo

@@ -53,9 +53,8 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
   }
   // Each vertex's list reach covers half the bound of its edges (edge_reach()). Until the
   // first compute() sees the edges: the floor of the large species, which covers near-regular
-  // polygons of both species (lists built directly, as some tests do).
-  edge_bound_.assign(p.vertices(), kEdgeBoundFloor * shape.l0[1]);
-  vertex_reach_.assign(p.vertices(), edge_reach(0.5 * kEdgeBoundFloor * shape.l0[1]));
+  // polygons of both species (lists built directly, as some tests do); topology_changed() sets it.
+  topology_changed();
   list_.set_extra_reach(&vertex_reach_);
   corner_edges_.reserve(p.vertices());
   fold_vertices_.reserve(p.vertices());

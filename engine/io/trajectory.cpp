@@ -114,7 +114,7 @@ void H5mdTrajectory<D>::create(const std::string& path, const SimConfig& c, cons
   h5::attr(params, "theta_w_left_deg", c.theta_w_left_deg);
   h5::attr(params, "theta_w_right_deg", c.theta_w_right_deg);
   h5::attr(params, "job", c.to_json().dump());
-  h5::flush(file_, "trajectory.h5");  // a frame that did not reach the disk is an I/O error
+  h5::flush(file_, "trajectory.h5");  // a header that did not reach the disk is an I/O error
 }
 
 template <int D>

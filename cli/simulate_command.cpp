@@ -27,6 +27,7 @@ struct SimulateArgs {
   std::string job_path;
   std::string out_dir;
   bool resume = false;
+  std::string continue_from;
   bool overwrite = false;
   bool json = false;
   double checkpoint_wall_seconds = 600;
@@ -122,6 +123,7 @@ int run_simulate(const SimulateArgs& a) {
   RunOptions opt;
   opt.output_dir = dir;
   opt.resume = a.resume;
+  opt.continue_from = a.continue_from;
   opt.progress = a.progress == "terminal" ? ProgressMode::Terminal
                  : a.progress == "log"    ? ProgressMode::Log
                  : a.progress == "quiet"  ? ProgressMode::Quiet
@@ -172,6 +174,11 @@ void add_simulate_command(CLI::App& app, int& exit_status) {
   cmd->add_option("JOB", args->job_path, "job file (JSON)")->required();
   cmd->add_option("-o,--output", args->out_dir, "output directory (default: out/<job name>)");
   cmd->add_flag("--resume", args->resume, "continue from DIR/checkpoint.h5 if present");
+  cmd->add_option("--continue-from", args->continue_from,
+                  "another job's checkpoint.h5 to continue when DIR holds no checkpoint: a job that differs from this "
+                  "one only in run.t_max, run.target_rel_err, run.stop_unreachable or run.min_time and stopped earlier "
+                  "(the result is that of a run from the start, bit for bit; otherwise the run starts from the beginning)")
+      ->check(CLI::ExistingFile);
   cmd->add_flag("--overwrite", args->overwrite, "discard a run already in DIR");
   cmd->add_flag("--json", args->json, "print the result summary as JSON");
   cmd->add_option("--checkpoint-wall", args->checkpoint_wall_seconds,

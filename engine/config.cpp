@@ -341,10 +341,11 @@ nlohmann::json SimConfig::to_json() const {
 }
 
 namespace {
-/// Removes the rows whose flag is false from a canonical job, and groups left empty.
-void erase_rows(json& j, bool ParamSpec::*keep) {
+/// Removes the rows whose flag is false (or, with drop_when_set, true) from a canonical job, and
+/// groups left empty.
+void erase_rows(json& j, bool ParamSpec::*keep, bool drop_when_set = false) {
   for (const ParamSpec& p : job_parameters()) {
-    if (p.*keep) continue;
+    if (p.*keep != drop_when_set) continue;
     const auto [g, k] = split_path(p.path);
     if (g.empty()) {
       j.erase(k);
@@ -359,6 +360,12 @@ void erase_rows(json& j, bool ParamSpec::*keep) {
 nlohmann::json SimConfig::key_json() const {
   json j = to_json();
   erase_rows(j, &ParamSpec::in_key);
+  return j;
+}
+
+nlohmann::json SimConfig::trajectory_json() const {
+  json j = to_json();
+  erase_rows(j, &ParamSpec::stop_rule, true);
   return j;
 }
 

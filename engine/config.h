@@ -40,6 +40,9 @@ struct RunControls {
   /// Stop early (status "unreachable") when the error's fall predicts that t_max will not bring
   /// SE(Q)/Q to the target (HopperRun::run); off by default.
   bool stop_unreachable = false;
+  /// No stopping rule but the clog's ends the run before this flowing time; above t_max it is
+  /// the time limit. A finished job is given more flow time by the job that differs only here.
+  double min_time = 0.0;
   double min_transient = 20.0;       ///< transient removed is at least this long
   double min_window = 100.0;         ///< the measurement window is at least this long before stopping
   double check_interval = 10.0;      ///< how often the stopping rule is evaluated
@@ -163,6 +166,9 @@ struct SimConfig {
   /// The canonical job without the settings that cannot change a finished result (the rows of
   /// engine/parameters.cpp with in_key = false): what the job key hashes.
   nlohmann::json key_json() const;
+  /// The canonical job without its stopping rules (the rows with stop_rule = true): equal for two
+  /// jobs that follow one trajectory and differ only in when they stop.
+  nlohmann::json trajectory_json() const;
   /// Fills the dimension-dependent defaults and checks every field; throws ConfigError.
   void resolve_and_validate();
   /// The seed: explicit, or a hash of the canonical physics and protocol parameters (run

@@ -168,17 +168,23 @@ std::vector<ParamSpec> build_table() {
       // --- run controls (not in the derived seed) ------------------------------------------
       {.path = "run.t_max", .type = T::Real, .unit = "t0", .default_text = "2000",
        .doc = "flowing time limit after gravity is switched on", .access = REAL(run.t_max), .lo = 0,
-       .lo_open = true, .in_seed = false, .sql_column = "t_max"},
+       .lo_open = true, .in_seed = false, .stop_rule = true, .sql_column = "t_max"},
       {.path = "run.target_rel_err", .type = T::Real, .unit = "-", .default_text = "0.02",
        .doc = "stop when SE(Q)/Q is at most this", .access = REAL(run.target_rel_err), .lo = 0, .hi = 1,
-       .lo_open = true, .hi_open = true, .in_seed = false, .sql_column = "target_rel_err"},
+       .lo_open = true, .hi_open = true, .in_seed = false, .stop_rule = true, .sql_column = "target_rel_err"},
       {.path = "run.t_clog", .type = T::Real, .unit = "t0", .default_text = "100", .doc = "no exit for this long: clogged",
        .access = REAL(run.t_clog), .lo = 0, .lo_open = true, .in_seed = false},
       {.path = "run.stop_unreachable", .type = T::Boolean, .unit = "-", .default_text = "false",
        .doc = "true: stop once the error's fall (1/sqrt of the window) predicts that run.t_max cannot reach run.target_rel_err "
               "(status unreachable; Q with its error)",
-       .access = BOOL(run.stop_unreachable), .in_seed = false, .omit_at_default = true, .sql_column = "stop_unreachable",
-       .sql_default = "0"},
+       .access = BOOL(run.stop_unreachable), .in_seed = false, .stop_rule = true, .omit_at_default = true,
+       .sql_column = "stop_unreachable", .sql_default = "0"},
+      {.path = "run.min_time", .type = T::Real, .unit = "t0", .default_text = "0",
+       .doc = "no stopping rule but the clog's ends the run before this flowing time (0: none; above run.t_max it is "
+              "the time limit): more flow time for a finished job, which the job with the larger run.min_time continues "
+              "from its final checkpoint",
+       .access = REAL(run.min_time), .lo = 0, .in_seed = false, .stop_rule = true, .omit_at_default = true,
+       .sql_column = "min_time", .sql_default = "0"},
       {.path = "run.min_transient", .type = T::Real, .unit = "t0", .default_text = "20",
        .doc = "the transient cut is at least this long", .access = REAL(run.min_transient), .lo = 0,
        .in_seed = false},

@@ -66,6 +66,10 @@ struct ParamSpec {
   bool sweepable = true;         ///< a sweep may vary it
   bool in_key = true;            ///< enters the job key (false: cannot change a finished result)
   bool in_seed = true;           ///< enters the derived seed (false: cannot change the trajectory)
+  /// Decides only when a run stops (t_max, target_rel_err, stop_unreachable, min_time): two jobs
+  /// that differ only in such fields follow one trajectory, and the one that stops later may
+  /// continue the other's final checkpoint (SimConfig::trajectory_json, HopperRun::prepare).
+  bool stop_rule = false;
   /// Added after engine 0.2.0: the canonical job carries it only when it is not at its
   /// default, so that every job key made before it existed stays valid.
   bool omit_at_default = false;

@@ -52,7 +52,7 @@ void HopperRun<D>::save_checkpoint(const std::string& target) const {
 }
 
 template <int D>
-void HopperRun<D>::load_checkpoint(const std::string& source) {
+void HopperRun<D>::load_checkpoint(const std::string& source, bool another_job) {
   H5Handle f = h5::open_file(source);
   if (h5::attr_string(f, "format") != "beverloo-checkpoint") throw IoError(source + " is not a beverloo checkpoint");
   // another engine sums the forces in another order: continuing its state would give a result
@@ -61,8 +61,23 @@ void HopperRun<D>::load_checkpoint(const std::string& source) {
   if (engine != BEVERLOO_VERSION)
     throw IoError(source + " was written by engine " + engine + ", this is " + BEVERLOO_VERSION);
   const std::string job = h5::attr_string(f, "job_json");
-  if (job != c_.to_json().dump())
-    throw ConfigError("job", "differs from the job of the checkpoint " + source + "; refusing to resume a different job");
+  if (job != c_.to_json().dump()) {
+    // another job on the same trajectory (only its stopping rules differ): HopperRun::prepare
+    // then checks that this job's rules would not have stopped it before the checkpoint's step
+    bool same_trajectory = false;
+    if (another_job) {
+      try {
+        same_trajectory = SimConfig::from_json(nlohmann::json::parse(job)).trajectory_json() == c_.trajectory_json();
+      } catch (const std::exception&) {
+      }
+    }
+    if (!same_trajectory)
+      throw ConfigError("job", another_job ? "follows another trajectory than the job of the checkpoint " + source +
+                                                 " (they differ in more than run.t_max, run.target_rel_err, "
+                                                 "run.stop_unreachable and run.min_time)"
+                                           : "differs from the job of the checkpoint " + source +
+                                                 "; refusing to resume a different job");
+  }
   s_.sp = model_->body_species();
   H5Handle p = h5::open_group(f, "particles");
   // a draining hopper's checkpoint holds the particles still in it (1 .. N)
@@ -109,7 +124,7 @@ void HopperRun<D>::load_checkpoint(const std::string& source) {
 
 template void HopperRun<2>::save_checkpoint(const std::string&) const;
 template void HopperRun<3>::save_checkpoint(const std::string&) const;
-template void HopperRun<2>::load_checkpoint(const std::string&);
-template void HopperRun<3>::load_checkpoint(const std::string&);
+template void HopperRun<2>::load_checkpoint(const std::string&, bool);
+template void HopperRun<3>::load_checkpoint(const std::string&, bool);
 
 }  // namespace beverloo

@@ -25,6 +25,17 @@ namespace {
 
 std::int64_t steps_for(double time, double dt) { return std::max<std::int64_t>(1, std::llround(time / dt)); }
 
+/// A checkpoint that is not on this job's trajectory (HopperRun::replay_stopping_rules).
+struct NotOnTrajectory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string time_text(double t) {
+  std::ostringstream o;
+  o << t;
+  return o.str();
+}
+
 /// c, once it is known to fit in memory: the first member's initialiser, so that a job this
 /// machine cannot hold is refused before any member allocates.
 const SimConfig& fits_in_memory(const SimConfig& c) {
@@ -126,6 +137,7 @@ void HopperRun<D>::prepare() {
   if (have_dir && opt_.resume && std::filesystem::exists(path("checkpoint.h5"))) {
     try {
       load_checkpoint(path("checkpoint.h5"));
+      stop_at_start_ = replay_stopping_rules(s_.step);  // a final checkpoint: the stop that was due there
       resumed = true;
     } catch (const std::exception& e) {
       // damaged, another job's, or from an engine whose state differs: set it aside (kept for
@@ -138,10 +150,28 @@ void HopperRun<D>::prepare() {
       start_over();
     }
   }
+  bool continued = false;
+  if (!resumed && have_dir && !opt_.continue_from.empty()) {
+    try {
+      if (!c_.reinject) throw NotOnTrajectory("a draining hopper is not continued");
+      if (c_.run.trajectory_every_steps > 0) throw NotOnTrajectory("this job writes a trajectory from its start");
+      load_checkpoint(opt_.continue_from, true);
+      stop_at_start_ = replay_stopping_rules(0);
+      resumed = continued = true;
+    } catch (const std::exception& e) {
+      // another trajectory, or one this job's rules would have ended earlier: nothing lost but
+      // the time the other job saved; this job runs from its beginning
+      if (opt_.progress != ProgressMode::Quiet)
+        std::fprintf(stderr, "not continuing %s (%s): running from the start\n", opt_.continue_from.c_str(), e.what());
+      start_over();
+      stop_at_start_.reset();
+    }
+  }
   if (resumed) {
     ++resumed_times_;
     if (opt_.progress != ProgressMode::Quiet)
-      std::fprintf(stderr, "resumed from checkpoint.h5 at step %lld (resume %d)\n", static_cast<long long>(s_.step), resumed_times_);
+      std::fprintf(stderr, "%s %s at step %lld (resume %d)\n", continued ? "continued the run of" : "resumed from",
+                   continued ? opt_.continue_from.c_str() : "checkpoint.h5", static_cast<long long>(s_.step), resumed_times_);
   } else {
     place_and_minimize();
     check_containment();
@@ -235,6 +265,57 @@ void HopperRun<D>::check_containment() const {
 }
 
 template <int D>
+std::int64_t HopperRun<D>::min_steps() const {
+  return std::llround(c_.run.min_time / ts_.dt);
+}
+
+template <int D>
+std::int64_t HopperRun<D>::max_steps() const {
+  return std::max<std::int64_t>(std::llround(c_.run.t_max / ts_.dt), min_steps());
+}
+
+template <int D>
+std::optional<typename HopperRun<D>::Stop> HopperRun<D>::check_rule(const FlowRateEstimate& est, std::int64_t step) const {
+  // a draining hopper has no steady state to converge to: it runs until it has drained
+  if (!c_.reinject || step < min_steps() || !est.valid || est.t_end - est.t_start < c_.run.min_window) return std::nullopt;
+  if (est.rel_err() <= c_.run.target_rel_err) return Stop{"converged", "relative error of Q reached run.target_rel_err"};
+  // The error of a steady flow's mean falls as 1/sqrt of the window: the window the time limit
+  // allows predicts the error there. Beyond the target by a margin (the present error is itself
+  // uncertain), the rest of the run would be spent for a point the target cannot have.
+  if (c_.run.stop_unreachable) {
+    const double t_limit = std::max(c_.run.t_max, c_.run.min_time);
+    const double predicted = est.rel_err() * std::sqrt((est.t_end - est.t_start) / (t_limit - est.t_start));
+    if (predicted > kUnreachableMargin * c_.run.target_rel_err)
+      return Stop{"unreachable", "at t_max SE(Q)/Q would be about " + std::to_string(predicted) + ", above " +
+                                     std::to_string(kUnreachableMargin) + " x run.target_rel_err"};
+  }
+  return std::nullopt;
+}
+
+template <int D>
+std::optional<typename HopperRun<D>::Stop> HopperRun<D>::replay_stopping_rules(std::int64_t from_step) {
+  // Every rule is a function of the exit record up to its step (the estimate at step k bins only
+  // exits before k dt), so the record of a later checkpoint answers for each earlier check. The
+  // clog rule needs no replay: run.t_clog is part of the trajectory, equal in both jobs.
+  const std::int64_t at = s_.step, limit = max_steps();
+  if (limit < at)
+    throw NotOnTrajectory("its time limit ends it at t = " + time_text(limit * ts_.dt) + ", before the checkpoint's t = " +
+                          time_text(time()));
+  const std::int64_t check_steps = steps_for(c_.run.check_interval, ts_.dt);
+  const std::int64_t first = std::max<std::int64_t>(1, (from_step + check_steps - 1) / check_steps) * check_steps;
+  for (std::int64_t k = first; k <= at; k += check_steps) {
+    const std::optional<Stop> stop = check_rule(estimator_.estimate(rec_, k * ts_.dt), k);
+    if (!stop) continue;
+    if (k < at)
+      throw NotOnTrajectory("its stopping rules end it at t = " + time_text(k * ts_.dt) + " (" + stop->status +
+                            "), before the checkpoint's t = " + time_text(time()));
+    return stop;
+  }
+  if (limit == at) return Stop{"time_limit", "reached run.t_max before the error target"};
+  return std::nullopt;
+}
+
+template <int D>
 void HopperRun<D>::advance(std::int64_t steps) {
   for (std::int64_t k = 0; k < steps; ++k) step_once();
 }
@@ -246,10 +327,15 @@ RunResult HopperRun<D>::run() {
   const std::int64_t check_steps = steps_for(c_.run.check_interval, dt);
   const std::int64_t ckpt_steps = c_.run.checkpoint_interval > 0 ? steps_for(c_.run.checkpoint_interval, dt) : 0;
   const std::int64_t traj_steps = c_.run.trajectory_every_steps;
-  const std::int64_t max_steps = std::llround(c_.run.t_max / dt);
+  const std::int64_t max_steps = this->max_steps();
   constexpr std::int64_t kContainmentSteps = 100;
   const bool files = !opt_.output_dir.empty();
   FlowRateEstimate est;
+  if (stop_at_start_) {  // the loaded checkpoint is where this job stops
+    const Stop stop = *stop_at_start_;
+    stop_at_start_.reset();
+    return finish(stop.status, stop.reason, estimator_.estimate(rec_, time()));
+  }
   if (traj_ && s_.step == 0) traj_->writer.write_frame(s_, 0.0);
 
   while (true) {
@@ -275,19 +361,7 @@ RunResult HopperRun<D>::run() {
       if (opt_.progress_step) opt_.progress_step->store(step, std::memory_order_relaxed);
       est = estimator_.estimate(rec_, t);
       report_progress(est, false);
-      // a draining hopper has no steady state to converge to: it runs until it has drained
-      if (c_.reinject && est.valid && est.t_end - est.t_start >= c_.run.min_window &&
-          est.rel_err() <= c_.run.target_rel_err)
-        return finish("converged", "relative error of Q reached run.target_rel_err", est);
-      // The error of a steady flow's mean falls as 1/sqrt of the window: the window t_max allows
-      // predicts the error at t_max. Beyond the target by a margin (the present error is itself
-      // uncertain), the rest of the run would be spent for a point the target cannot have.
-      if (c_.run.stop_unreachable && c_.reinject && est.valid && est.t_end - est.t_start >= c_.run.min_window) {
-        const double predicted = est.rel_err() * std::sqrt((est.t_end - est.t_start) / (c_.run.t_max - est.t_start));
-        if (predicted > kUnreachableMargin * c_.run.target_rel_err)
-          return finish("unreachable", "at t_max SE(Q)/Q would be about " + std::to_string(predicted) + ", above " +
-                                           std::to_string(kUnreachableMargin) + " x run.target_rel_err", est);
-      }
+      if (const auto stop = check_rule(est, step)) return finish(stop->status, stop->reason, est);
     }
     if (step >= max_steps) {
       est = estimator_.estimate(rec_, t);
@@ -420,6 +494,11 @@ RunResult HopperRun<D>::finish(const std::string& status, const std::string& rea
   report_progress(e, true);
   if (opt_.progress == ProgressMode::Terminal) std::fputc('\n', stderr);
   if (!opt_.output_dir.empty()) {
+    // the state where the run stopped, before the result: a job that only stops later continues
+    // it (RunOptions::continue_from), and a crash before the result resumes to this same stop;
+    // not where no checkpoint was asked for at all (no cadence, no wall-clock checkpoints)
+    const bool checkpoints = c_.run.checkpoint_interval > 0 || opt_.checkpoint_wall_seconds > 0;
+    if (c_.reinject && !r.clogged && checkpoints) save_checkpoint(path("checkpoint.h5"));
     write_result_file(path("result.h5"), c_, r);
     write_text_atomically(path("summary.json"), r.summary_json().dump(2) + "\n");
   }

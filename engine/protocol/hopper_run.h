@@ -66,7 +66,8 @@ class HopperRun : private StepHook<D> {
   double time() const { return s_.step * ts_.dt; }
 
   void save_checkpoint(const std::string& path) const;
-  void load_checkpoint(const std::string& path);
+  /// another_job: the checkpoint may be of a job that differs only in its stopping rules
+  void load_checkpoint(const std::string& path, bool another_job = false);
 
  private:
   void step_once();
@@ -85,6 +86,19 @@ class HopperRun : private StepHook<D> {
   /// Height above which a particle counts as escaped upward; returns the current top.
   double set_ceiling();
   RunResult finish(const std::string& status, const std::string& reason, const FlowRateEstimate& e);
+  struct Stop {
+    std::string status, reason;
+  };
+  /// The stopping rules of a check step (converged, unreachable) on its estimate.
+  std::optional<Stop> check_rule(const FlowRateEstimate& est, std::int64_t step) const;
+  /// After a checkpoint was loaded at step C: this job's rules at its check steps from
+  /// `from_step` to C and its time limit. Throws NotOnTrajectory if they would have ended the run
+  /// before C; returns the stop due at C itself (a final checkpoint, or a continued job whose
+  /// rules are met there), if any.
+  std::optional<Stop> replay_stopping_rules(std::int64_t from_step);
+  std::int64_t min_steps() const;  ///< no rule but the clog's before this step (run.min_time)
+  std::int64_t max_steps() const;  ///< the time limit's step: run.t_max, or run.min_time above it
+  std::optional<Stop> stop_at_start_;  ///< a stop due at the loaded checkpoint's step
   void report_progress(const FlowRateEstimate& e, bool force);
   std::string path(const std::string& name) const;
 

@@ -18,6 +18,12 @@ enum class ProgressMode { Auto, Terminal, Log, Quiet };
 struct RunOptions {
   std::string output_dir;  ///< where checkpoint.h5, result.h5, summary.json go; empty: nowhere
   bool resume = false;     ///< continue from output_dir/checkpoint.h5 if it exists
+  /// Without a checkpoint of its own: another job's checkpoint to continue, a job that differs
+  /// from this one only in its stopping rules (SimConfig::trajectory_json) and stopped earlier
+  /// (more flow time for a finished point). Used only where this job's own rules would not have
+  /// stopped it before the checkpoint's step; otherwise the run starts from the beginning. The
+  /// result is the one a run from the beginning gives, bit for bit.
+  std::string continue_from;
   ProgressMode progress = ProgressMode::Quiet;
   /// Set asynchronously (signal handler): checkpoint at the end of the current step and stop.
   const std::atomic<bool>* stop_request = nullptr;

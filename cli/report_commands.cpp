@@ -158,10 +158,14 @@ void add_report_commands(CLI::App& app, int& exit_status) {
         if (std::isfinite(*beta_err)) targets.beta_err = *beta_err;
         print_next_widths(fits, targets, *w_range, *w_step);
       }
-      for (const Series& s : fits.series)
+      for (const Series& s : fits.series) {
         if (s.left_out > 0)
           std::printf("\n%s: %d replica(s) with a flow rate but no usable error (Q_err not > 0) left out of the fit\n",
                       terminal_safe(s.label).c_str(), s.left_out);
+        if (s.continued > 0)
+          std::printf("\n%s: %d run(s) continued by a longer run of the same trajectory (run.min_time): the longer "
+                      "run is the point\n", terminal_safe(s.label).c_str(), s.continued);
+      }
       if (!store) return exit_code::kOk;
       std::printf("\nfits stored in %s/campaign.sqlite (views beverloo_fits, crossover_fits, beverloo_fits_both_ways, crossover_fits_both_ways, clog_statistics) and %s/*.csv, *.md\n",
                   terminal_safe(*dir).c_str(), terminal_safe(out).c_str());

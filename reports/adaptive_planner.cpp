@@ -1,6 +1,8 @@
 #include "adaptive_planner.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <map>
 #include <set>
 #include <sstream>
@@ -60,6 +62,49 @@ JobSpec job_at(const SeriesJobs& series, double w) {
     return spec;
   }
 }
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The series' finished runs as next_width() prices them (adaptive.extend); run_index: the index
+/// in `runs` of each of the costs' runs.
+FlowTimeCosts flow_time_costs(const std::vector<RunRecord>& runs, std::vector<std::size_t>& run_index) {
+  FlowTimeCosts c;
+  std::vector<double> starts, exits_rel2;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const RunRecord& r = runs[i];
+    const double window = r.window_end - r.window_start;
+    if (r.clogged || !(r.Q > 0 && r.Q_err > 0 && window > 0)) continue;
+    c.runs.push_back({r.w, r.Q_err, window});
+    run_index.push_back(i);
+    starts.push_back(r.window_start);
+    exits_rel2.push_back(window * r.Q * (r.Q_err / r.Q) * (r.Q_err / r.Q));
+  }
+  c.start_t0 = median_of(starts);
+  c.exits_rel2 = median_of(exits_rel2);
+  return c;
+}
+
+/// The job that gives the finished run `key` its window again: the same job with run.min_time
+/// at its end plus its window, on a check step (the run then stops there, its error rule met).
+JobSpec extended_job(db::Database& db, const std::string& key, const RunRecord& run) {
+  db::Statement st = db.prepare("SELECT job_json FROM jobs WHERE key = ?1");
+  st.bind(1, key);
+  if (!st.step()) throw std::runtime_error("the job " + key + " is not in the database");
+  json job = json::parse(st.get_text(0));
+  const double check = job.at("run").at("check_interval").get<double>();
+  const double min_time = std::ceil((run.end_time + (run.window_end - run.window_start)) / check - 1e-9) * check;
+  job["run"]["min_time"] = min_time;
+  JobSpec spec;
+  spec.config = SimConfig::from_json(job);
+  spec.key = job_key(spec.config);
+  spec.job = spec.config.to_json();
+  spec.point = {{"w", run.w}, {"replica", run.replica}, {"min_time", min_time}, {"adaptive", true}};
+  return spec;
+}
+
 /// The decisions of a beta(lambda) group are rows with this series_key: its added series' jobs
 /// and its stop (the series keep their own rows, so a new series has its own budget of widths).
 std::string group_key(const Crossover& g) { return "lambda_" + g.key.substr(0, 16); }
@@ -225,6 +270,7 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
   std::map<std::string, const Series*> by_key;
   for (const Series& s : fitted) by_key[s.key] = &s;
 
+  std::optional<CampaignRuns> campaign_runs;  // read once, for adaptive.extend
   DesignTargets targets;
   targets.k_err = spec->k_err;
   targets.beta_err = spec->beta_err;
@@ -245,9 +291,18 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
     }
     std::vector<double> w, Q, err;
     s.flowing_columns(w, Q, err);
+    std::optional<FlowTimeCosts> costs;
+    std::vector<std::size_t> run_index;  // per costs->runs: its index in the series' runs
+    const Series* read_series = nullptr;  // the series as read (its runs and job keys in parallel)
+    if (spec->extend) {
+      if (!campaign_runs) campaign_runs = read_campaign_runs(db, campaign);
+      for (const Series& c : campaign_runs->series)
+        if (c.key == key) read_series = &c;
+      if (read_series) costs = flow_time_costs(campaign_runs->runs[key], run_index);
+    }
     DesignAdvice advice;
     try {
-      advice = next_width(*s.fit, w, Q, err, spec->w_lo, spec->w_hi, spec->w_step, targets);
+      advice = next_width(*s.fit, w, Q, err, spec->w_lo, spec->w_hi, spec->w_step, targets, costs ? &*costs : nullptr);
     } catch (const FitError& e) {
       out.push_back(stop(key, std::string("no design: ") + e.what(), &s));
       continue;
@@ -264,14 +319,25 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
     PlanDecision d;
     d.series_key = key;
     d.action = "add";
-    d.job = job_at(sj, advice.next->w);
+    const std::optional<std::size_t> extend = advice.next->extend_run;
+    const RunRecord* extended = nullptr;
+    if (extend) {
+      const std::size_t i = run_index[*extend];
+      extended = &campaign_runs->runs[key][i];
+      d.job = extended_job(db, read_series->job_keys[i], *extended);
+    } else {
+      d.job = job_at(sj, advice.next->w);
+    }
     d.k_err = advice.k_err_now;
     d.beta_err = advice.beta_err_now;
     d.k_err_after = advice.next->k_err_after;
     d.beta_err_after = advice.next->beta_err_after;
     d.flowing_points = static_cast<int>(w.size());
     std::ostringstream why;
-    why << "w = " << num(advice.next->w) << " (replica " << d.job->config.replica << "): k_err " << num(advice.k_err_now)
+    why << "w = " << num(advice.next->w) << " (replica " << d.job->config.replica;
+    if (extended)
+      why << ", more flow time: t = " << num(extended->end_time) << " -> " << num(d.job->config.run.min_time);
+    why << "): k_err " << num(advice.k_err_now)
         << " -> " << num(advice.next->k_err_after) << ", beta_err " << num(advice.beta_err_now) << " -> "
         << num(advice.next->beta_err_after) << " predicted, cost " << num(advice.next->relative_cost)
         << " x a run at the median Q";

@@ -29,6 +29,9 @@ struct Series {
   /// Replicas with a flow rate but no usable error (Q_err not > 0 or not a number): left out
   /// of the pooled points and the fit, and said so (never pooled as Q = 0 +- 0).
   int left_out = 0;
+  /// Runs continued by a longer run of their own trajectory (run.min_time: more flow time for a
+  /// point): left out, the longer run holds their flow (reports/campaign_runs.cpp).
+  int continued = 0;
   std::string model = "sp";          ///< sp, dp_smooth, dp_rough; "experiment" for an imported series
   std::string stiffness;             ///< the model's stiffness parameters, e.g. "SP E_sp=100"
   int dimension = 2, N = 0;

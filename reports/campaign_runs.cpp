@@ -14,18 +14,50 @@ using nlohmann::json;
 std::string fmt(double v, int digits = 4) { return table_number(v, digits); }
 }  // namespace
 
-std::string series_key_of(const nlohmann::json& job) {
+namespace {
+/// A job without what varies within one series: the width, the replica, the seed, and
+/// run.min_time (a job given more flow time continues its point; no job made before that row
+/// existed carries it, so every earlier series key stays what it was).
+json series_job_of(const json& job) {
   json series_job = job;
   for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
-  return sha256_hex(series_job.dump());
+  if (series_job.contains("run")) {
+    series_job["run"].erase("min_time");
+    if (series_job["run"].empty()) series_job.erase("run");
+  }
+  return series_job;
 }
+
+/// Of the runs of one trajectory (the same w, replica and seed in one series: they differ only
+/// in run.min_time), the one that ran longest holds the others' flow: only it is a point.
+void drop_continued_runs(Series& s, std::vector<RunRecord>& runs) {
+  std::vector<RunRecord> kept_runs;
+  std::vector<std::string> kept_keys;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    bool longer_exists = false;
+    for (std::size_t j = 0; j < runs.size() && !longer_exists; ++j)
+      longer_exists = j != i && runs[j].w == runs[i].w && runs[j].replica == runs[i].replica && runs[j].seed == runs[i].seed &&
+                      (runs[j].end_time > runs[i].end_time || (runs[j].end_time == runs[i].end_time && j < i));
+    if (longer_exists) {
+      ++s.continued;
+      continue;
+    }
+    kept_runs.push_back(runs[i]);
+    kept_keys.push_back(s.job_keys[i]);
+  }
+  runs = std::move(kept_runs);
+  s.job_keys = std::move(kept_keys);
+}
+}  // namespace
+
+std::string series_key_of(const nlohmann::json& job) { return sha256_hex(series_job_of(job).dump()); }
 
 CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRate rate) {
   CampaignRuns out;
   // a clogged run's Q' is as missing as its Q (0): coalesce keeps the row
   const std::string columns = rate == FlowRate::QPrime ? "coalesce(r.Q_prime, 0), coalesce(r.Q_prime_err, 0)" : "r.Q, r.Q_err";
   db::Statement st = db.prepare(
-      "SELECT j.key, j.job_json, " + columns + ", r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt FROM jobs j "
+      "SELECT j.key, j.job_json, " + columns + ", r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt, r.window_start, r.window_end FROM jobs j "
       "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
       "WHERE c.campaign_id = coalesce(?1, (SELECT max(id) FROM campaigns)) ORDER BY c.point_index");
   if (campaign >= 0)
@@ -37,8 +69,7 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
   while (st.step()) {
     json job = json::parse(st.get_text(1));
     const double w = job["w"].get<double>();
-    json series_job = job;
-    for (const char* k : {"w", "replica", "seed"}) series_job.erase(k);
+    const json series_job = series_job_of(job);
     const std::string key = series_key_of(job);
     if (!index.count(key)) {
       Series s;
@@ -98,15 +129,19 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
     RunRecord r;
     r.w = w;
     r.replica = job.value("replica", 0);
+    if (job.contains("seed")) r.seed = job["seed"].dump();
     r.Q = st.get_double(2);
     r.Q_err = st.get_double(3);
     r.clogged = st.get_int(4) != 0;
     r.time_limited = st.get_text(5) == "time_limit" || st.get_text(5) == "unreachable";  // Q with its larger error
     r.clog_time = st.get_double(6);
     r.end_time = static_cast<double>(st.get_int(7)) * st.get_double(8);
+    r.window_start = st.get_double(9);
+    r.window_end = st.get_double(10);
     r.t_max = job.contains("run") ? job["run"].value("t_max", 0.0) : 0.0;
     out.runs[key].push_back(r);
   }
+  for (Series& s : out.series) drop_continued_runs(s, out.runs[s.key]);
   {
     std::vector<std::string> labels;
     for (const Series& s : out.series) labels.push_back(s.label);

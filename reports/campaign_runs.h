@@ -1,8 +1,8 @@
 #pragma once
 /// \file campaign_runs.h
 /// \brief A campaign's finished jobs read from its database and grouped into series (every
-/// parameter but w, the replica and the seed equal), labelled so that no two read alike; the
-/// first step of `beverloo fit` (reports/campaign_fits.h).
+/// parameter but w, the replica, the seed and run.min_time equal), labelled so that no two read
+/// alike; the first step of `beverloo fit` (reports/campaign_fits.h).
 #include <map>
 #include <string>
 #include <vector>
@@ -17,10 +17,12 @@ namespace beverloo {
 struct RunRecord {
   double w = 0;
   int replica = 0;
+  std::string seed;  ///< an explicit seed as the job gives it ("" when derived from the parameters)
   double Q = 0, Q_err = 0;
   bool clogged = false, time_limited = false;
   double clog_time = -1;  ///< the last exit before the clog (t0); -1 without a clog
   double end_time = 0;    ///< steps x dt: where the run ended (t0)
+  double window_start = 0, window_end = 0;  ///< its measurement window (t0)
   double t_max = 0;       ///< its run.t_max
 };
 
@@ -32,7 +34,8 @@ struct CampaignRuns {
 
 /// The jobs with a result of a campaign (campaign < 0: the latest), their points of `rate`.
 CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign = -1, FlowRate rate = FlowRate::Q);
-/// A job's series key: sha256 of its canonical JSON without w, the replica and the seed.
+/// A job's series key: sha256 of its canonical JSON without w, the replica, the seed and
+/// run.min_time.
 std::string series_key_of(const nlohmann::json& job);
 
 }  // namespace beverloo

@@ -139,7 +139,24 @@ class Coordinator {
     }
     fs::create_directories(dir);
     job_files::write_spec(dir, {job.key, job.attempt_no, job.token, o_.heartbeat_s, o_.threads,
-                                nlohmann::json::parse(job.job_json)});
+                                nlohmann::json::parse(job.job_json), continuation_of(job)});
+  }
+
+  /// A job with no checkpoint of its own that only stops later than a finished job of its
+  /// trajectory (more flow time for a point) continues that job's final checkpoint: the path the
+  /// worker is given, relative to the job's directory ("" for none).
+  std::string continuation_of(const ClaimedJob& job) {
+    const fs::path own = fs::path(job_dir(job.dir)) / job_output::kCheckpoint;
+    if (fs::exists(own)) return "";
+    for (const std::string& source : store_.continuation_sources(job.key)) {
+      const fs::path rel = fs::path(source);
+      if (rel.parent_path() != fs::path(job.dir).parent_path()) continue;  // siblings under jobs/ only
+      if (!fs::exists(fs::path(job_dir(source)) / job_output::kCheckpoint)) continue;
+      const std::string path = (fs::path("..") / rel.filename() / job_output::kCheckpoint).string();
+      log_event(job, "continues", "the run of " + source + " (the same trajectory, stopped earlier)");
+      return path;
+    }
+    return "";
   }
 
   /// An attempt has ended: decide from its files first (outcome.json with its token), then from

@@ -13,12 +13,13 @@
 namespace beverloo::job_files {
 
 void write_spec(const std::string& job_dir, const Spec& s) {
-  const nlohmann::json j = {{"key", s.key},
+  nlohmann::json j = {{"key", s.key},
                             {"attempt_no", s.attempt_no},
                             {"token", s.token},
                             {"heartbeat_s", s.heartbeat_s},
                             {"threads", s.threads},
                             {"job", s.job}};
+  if (!s.continue_from.empty()) j["continue_from"] = s.continue_from;
   write_text_atomically((std::filesystem::path(job_dir) / kSpec).string(), j.dump(2) + "\n");
 }
 
@@ -51,6 +52,14 @@ SpecRead read_spec(const std::string& path) {
     if (j.contains("threads") && !(j["threads"].is_number_integer() && j["threads"].get<std::int64_t>() >= 1 &&
                                    j["threads"].get<std::int64_t>() <= 4096))
       return "\"threads\": not an integer from 1 to 4096";
+    if (j.contains("continue_from")) {
+      // only a sibling job's checkpoint: the coordinator writes nothing else here
+      const std::filesystem::path p = j["continue_from"].is_string() ? j["continue_from"].get<std::string>() : "";
+      auto it = p.begin();
+      const bool sibling = std::distance(p.begin(), p.end()) == 3 && *it++ == ".." && it->string() != ".." &&
+                           it->string() != "." && *++it == "checkpoint.h5";
+      if (!sibling) return "\"continue_from\": not \"../<job directory>/checkpoint.h5\"";
+    }
     return "";
   };
   r.problem = problem();
@@ -62,6 +71,7 @@ SpecRead read_spec(const std::string& path) {
   s.heartbeat_s = j.value("heartbeat_s", 30.0);
   s.threads = static_cast<int>(j.value("threads", std::int64_t{1}));
   s.job = std::move(j["job"]);
+  s.continue_from = j.value("continue_from", "");
   r.spec = std::move(s);
   return r;
 }

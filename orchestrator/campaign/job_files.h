@@ -30,6 +30,10 @@ struct Spec {
   double heartbeat_s = 30;   ///< seconds between heartbeat records (> 0)
   int threads = 1;           ///< threads for the engine's steps, 1 .. 4096
   nlohmann::json job;        ///< the job file (an object; SimConfig::from_json reads it)
+  /// Another job's checkpoint this one may continue when it has none of its own (the same
+  /// trajectory, stopped earlier: RunOptions::continue_from), relative to this job's directory
+  /// ("../<dir>/checkpoint.h5"); empty: none.
+  std::string continue_from;
 };
 /// What read_spec() found: the spec, or why there is none. A spec.json that is there but damaged
 /// has its problem (the field and what is wrong with it) and, where it has one, its token, so a

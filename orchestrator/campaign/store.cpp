@@ -128,6 +128,32 @@ std::int64_t CampaignStore::latest_campaign() {
   return st.step() && !st.is_null(0) ? st.get_int(0) : -1;
 }
 
+std::vector<std::string> CampaignStore::continuation_sources(const std::string& key) {
+  db::Statement mine = db_.prepare("SELECT job_json, seed, w, engine_version FROM jobs WHERE key = ?1");
+  mine.bind(1, key);
+  if (!mine.step()) return {};
+  const nlohmann::json trajectory = SimConfig::from_json(nlohmann::json::parse(mine.get_text(0))).trajectory_json();
+  // one trajectory has one seed and one w: the indexed columns narrow the search to a handful
+  db::Statement st = db_.prepare(
+      "SELECT j.dir, j.job_json FROM jobs j JOIN results r ON r.job_key = j.key "
+      "WHERE j.seed = ?1 AND j.w = ?2 AND j.engine_version = ?3 AND j.key != ?4 AND j.state = 'done' AND r.clogged = 0 "
+      "ORDER BY r.steps DESC, j.key");
+  st.bind(1, mine.get_int(1));
+  st.bind(2, mine.get_double(2));
+  st.bind(3, mine.get_text(3));
+  st.bind(4, key);
+  std::vector<std::string> dirs;
+  while (st.step()) {
+    try {
+      if (SimConfig::from_json(nlohmann::json::parse(st.get_text(1))).trajectory_json() == trajectory)
+        dirs.push_back(st.get_text(0));
+    } catch (const std::exception&) {
+      // a stored job this engine cannot read is nobody's trajectory
+    }
+  }
+  return dirs;
+}
+
 std::optional<ClaimedJob> CampaignStore::claim_next(std::int64_t campaign, const std::string& executor,
                                                     const std::string& host) {
   db::Transaction tx(db_);

@@ -56,6 +56,12 @@ class CampaignStore {
   /// The newest campaign, or -1.
   std::int64_t latest_campaign();
 
+  /// The directories of finished jobs (of any campaign, this engine) on the trajectory of the
+  /// job `key` (SimConfig::trajectory_json: they differ from it only in their stopping rules),
+  /// the one that ran furthest first: checkpoints the job may continue (a job given more flow
+  /// time). The engine decides whether it can (HopperRun::prepare); none: an empty list.
+  std::vector<std::string> continuation_sources(const std::string& key);
+
   /// Takes the next pending job of the campaign and records a new running attempt for it.
   std::optional<ClaimedJob> claim_next(std::int64_t campaign, const std::string& executor, const std::string& host);
   void set_attempt_pid(std::int64_t attempt_id, std::int64_t pid);

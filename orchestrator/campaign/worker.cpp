@@ -128,6 +128,7 @@ int run_attempt(const std::string& dir, const job_files::Spec& spec, const std::
     RunOptions opt;
     opt.output_dir = dir;
     opt.resume = true;
+    if (!spec.continue_from.empty()) opt.continue_from = (fs::path(dir) / spec.continue_from).string();
     opt.progress = ProgressMode::Log;
     opt.stop_request = stop;
     opt.progress_step = &step;

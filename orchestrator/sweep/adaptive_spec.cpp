@@ -64,8 +64,8 @@ LambdaAdaptiveSpec parse_lambda(const json& block) {
 
 AdaptiveSpec AdaptiveSpec::parse(const json& block) {
   if (!block.is_object()) throw SweepError("adaptive", shown(block) + ": must be an object");
-  only_fields(block, {"target", "w_range", "w_step", "max_added_jobs", "lambda", "comment"}, "adaptive",
-              "target, w_range, w_step, max_added_jobs, lambda, comment");
+  only_fields(block, {"target", "w_range", "w_step", "max_added_jobs", "extend", "lambda", "comment"}, "adaptive",
+              "target, w_range, w_step, max_added_jobs, extend, lambda, comment");
   AdaptiveSpec s;
   if (!block.contains("target")) throw SweepError("adaptive.target", "missing: say which errors are wanted (k_err, beta_err)");
   const json& t = block["target"];
@@ -88,6 +88,10 @@ AdaptiveSpec AdaptiveSpec::parse(const json& block) {
     if (!m.is_number_integer() || m.get<long>() < 1 || m.get<long>() > 10000)
       throw SweepError("adaptive.max_added_jobs", shown(m) + ": must be an integer in [1, 10000]");
     s.max_added_jobs = static_cast<int>(m.get<long>());
+  }
+  if (block.contains("extend")) {
+    if (!block["extend"].is_boolean()) throw SweepError("adaptive.extend", shown(block["extend"]) + ": must be true or false");
+    s.extend = block["extend"].get<bool>();
   }
   if (block.contains("comment") && !block["comment"].is_string())
     throw SweepError("adaptive.comment", shown(block["comment"]) + ": must be a string");

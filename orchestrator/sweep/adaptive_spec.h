@@ -8,7 +8,12 @@
 ///
 ///   "adaptive": {"target": {"k_err": 0.1, "beta_err": 0.05},   standard errors wanted (absolute)
 ///                "w_range": [3, 12], "w_step": 0.5,             candidate widths
-///                "max_added_jobs": 20}                          per series
+///                "max_added_jobs": 20,                          per series
+///                "extend": true}                                 also more flow time for a run
+///
+/// With "extend" a decision may also be more flow time for a finished run (its job with a
+/// larger run.min_time, continuing its final checkpoint), chosen where that costs less per
+/// information than a new run, whose transient and start the extension does not pay again.
 ///
 /// With a "lambda" block the planner also grows each beta(lambda) group (series differing only
 /// in lambda): once every series of the campaign is decided, it fits the crossover and adds a
@@ -39,6 +44,7 @@ struct AdaptiveSpec {
   std::optional<double> k_err, beta_err;
   double w_lo = 0, w_hi = 0, w_step = 0.5;
   int max_added_jobs = 20;
+  bool extend = false;  ///< also more flow time for finished runs (reports/next_width.h)
   std::optional<LambdaAdaptiveSpec> lambda;  ///< grow the beta(lambda) groups too
 
   /// Parses and checks the block (SweepError naming "adaptive.<field>").

@@ -32,7 +32,14 @@ TEST(JobFiles, SpecWrittenIsSpecRead) {
   EXPECT_EQ(r.spec->heartbeat_s, 12.5);
   EXPECT_EQ(r.spec->threads, 2);
   EXPECT_EQ(r.spec->job, out.job);
+  EXPECT_EQ(r.spec->continue_from, "");
   EXPECT_FALSE(fs::exists(d.path / (std::string(job_files::kSpec) + ".tmp"))) << "written through a temporary name";
+  job_files::Spec more = out;
+  more.continue_from = "../0123456789abcdef/checkpoint.h5";
+  job_files::write_spec(d.path.string(), more);
+  const job_files::SpecRead m = job_files::read_spec((d.path / job_files::kSpec).string());
+  ASSERT_TRUE(m.spec) << m.problem;
+  EXPECT_EQ(m.spec->continue_from, more.continue_from);
 }
 
 TEST(JobFiles, DamagedSpecNamesItsFieldAndKeepsItsToken) {
@@ -53,6 +60,12 @@ TEST(JobFiles, DamagedSpecNamesItsFieldAndKeepsItsToken) {
                         Case{R"({"token": "t", "attempt_no": 1, "job": {}, "heartbeat_s": 0})", "\"heartbeat_s\"", "t"},
                         Case{R"({"token": "t", "attempt_no": 1, "job": {}, "threads": 4097})", "\"threads\"", "t"},
                         Case{R"({"token": "t", "attempt_no": 1, "job": {}, "key": 7})", "\"key\"", "t"},
+                        // only a sibling job's checkpoint may be continued: nothing else on the disk
+                        Case{R"({"token": "t", "attempt_no": 1, "job": {}, "continue_from": "/etc/passwd"})", "\"continue_from\"", "t"},
+                        Case{R"({"token": "t", "attempt_no": 1, "job": {}, "continue_from": "../../x/checkpoint.h5"})", "\"continue_from\"", "t"},
+                        Case{R"({"token": "t", "attempt_no": 1, "job": {}, "continue_from": "../../checkpoint.h5"})", "\"continue_from\"", "t"},
+                        Case{R"({"token": "t", "attempt_no": 1, "job": {}, "continue_from": "../a/result.h5"})", "\"continue_from\"", "t"},
+                        Case{R"({"token": "t", "attempt_no": 1, "job": {}, "continue_from": 3})", "\"continue_from\"", "t"},
                         Case{R"([1, 2])", "JSON object", ""}}) {
     const job_files::SpecRead r = read(c.text);
     EXPECT_FALSE(r.spec) << c.text;

@@ -69,6 +69,49 @@ TEST(NextWidth, MetTargetsAskForNothingAndUnmetOnesForARun) {
   EXPECT_LT(tight.next->beta_err_after, tight.beta_err_now);
 }
 
+/// The runs of a series as FlowTimeCosts lists them: each run's window gives its 2 % error,
+/// exits_rel2 = window Q (SE/Q)^2 the same for all.
+FlowTimeCosts flow_costs(const Series& s, double start_t0, double exits_rel2 = 400 * 0.02 * 0.02) {
+  FlowTimeCosts c;
+  c.start_t0 = start_t0;
+  c.exits_rel2 = exits_rel2;
+  for (std::size_t i = 0; i < s.w.size(); ++i) c.runs.push_back({s.w[i], s.Q_err[i], exits_rel2 / (0.02 * 0.02 * s.Q[i])});
+  return c;
+}
+
+TEST(NextWidth, MoreFlowTimeWinsWhereANewRunsStartCostsMoreThanItsWindow) {
+  // the range allows no width the series has not got: a new run or more flow time, at its widths
+  const Series s = exact({3, 4, 6, 8, 10});
+  const BeverlooFit f = fit_beverloo(s.w, s.Q, s.Q_err);
+  // no start to pay: a new run at a width and the same width's run extended add the same
+  // information for the same flow; the tie goes to the new run (the run-to-run spread is worth
+  // having), and the choice is the one without costs
+  const FlowTimeCosts free_start = flow_costs(s, 0.0);
+  const DesignAdvice plain = next_width(f, s.w, s.Q, s.Q_err, 3.0, 10.0, 1.0);
+  const DesignAdvice tie = next_width(f, s.w, s.Q, s.Q_err, 3.0, 10.0, 1.0, {}, &free_start);
+  ASSERT_TRUE(tie.next && plain.next);
+  EXPECT_FALSE(tie.next->extend_run.has_value());
+  EXPECT_EQ(tie.next->w, plain.next->w);
+  EXPECT_NEAR(tie.next->k_err_after, plain.next->k_err_after, 1e-12);
+  // a start as long as a window: the run at the chosen width is extended instead, with the
+  // same predicted errors (the same information) at half the cost
+  const FlowTimeCosts costly_start = flow_costs(s, 1e3);
+  const DesignAdvice ext = next_width(f, s.w, s.Q, s.Q_err, 3.0, 10.0, 1.0, {}, &costly_start);
+  ASSERT_TRUE(ext.next && ext.next->extend_run);
+  const std::size_t i = *ext.next->extend_run;
+  EXPECT_EQ(costly_start.runs[i].w, ext.next->w);
+  EXPECT_LT(ext.next->k_err_after, ext.k_err_now);
+  EXPECT_LT(ext.next->beta_err_after, ext.beta_err_now);
+  EXPECT_NEAR(ext.next->relative_cost * (1e3 + costly_start.exits_rel2 / (0.02 * 0.02 * s.Q[2])),
+              costly_start.runs[i].window_t0, 1e-9 * costly_start.runs[i].window_t0);
+  // a run that cannot be extended (no error, or at or below k) is never chosen
+  FlowTimeCosts none = costly_start;
+  for (auto& r : none.runs) r.Q_err = 0;
+  const DesignAdvice no_ext = next_width(f, s.w, s.Q, s.Q_err, 3.0, 10.0, 1.0, {}, &none);
+  ASSERT_TRUE(no_ext.next);
+  EXPECT_FALSE(no_ext.next->extend_run.has_value());
+}
+
 TEST(NextWidth, BadInputIsAFitErrorNotANumber) {
   const Series s = exact({6, 7, 8, 9, 10});
   const BeverlooFit f = fit_beverloo(s.w, s.Q, s.Q_err);

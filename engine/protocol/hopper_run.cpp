@@ -157,6 +157,10 @@ void HopperRun<D>::prepare() {
       if (c_.run.trajectory_every_steps > 0) throw NotOnTrajectory("this job writes a trajectory from its start");
       load_checkpoint(opt_.continue_from, true);
       stop_at_start_ = replay_stopping_rules(0);
+      // this job's engine time is its own (a campaign's sum of engine time counts each second
+      // once); its one resume is the continuation
+      wall_seconds_before_ = 0;
+      resumed_times_ = 0;
       resumed = continued = true;
     } catch (const std::exception& e) {
       // another trajectory, or one this job's rules would have ended earlier: nothing lost but

@@ -53,6 +53,10 @@ sim "$WORK/b.json" -o "$WORK/b_cont" --continue-from "$WORK/a/checkpoint.h5"
 grep -q "continued the run of" "$WORK/log" || fail "b did not continue a: $(cat "$WORK/log")"
 same "$WORK/b_fresh" "$WORK/b_cont" "b continued from a"
 python3 -c "import sys; sys.exit(0 if $(t_end "$WORK/b_cont") > $ta else 1)" || fail "b did not run longer than a"
+# its engine time is its own, and its one resume the continuation
+python3 -c "import json, sys; sys.exit(0 if json.load(open(sys.argv[1]))['resumed_times'] == 1 else 1)" "$WORK/b_cont/summary.json" \
+  || fail "a continued run should count one resume"
+
 echo "ok  run.min_time: continued from a's final checkpoint (t = $ta -> $(t_end "$WORK/b_cont")), bit-identical"
 
 # a tighter error target with a later time limit: the same

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "campaign_fits.h"
 #include "campaign_runs.h"
@@ -62,6 +62,7 @@ JobSpec job_at(const SeriesJobs& series, double w) {
     return spec;
   }
 }
+
 double median_of(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();

@@ -27,6 +27,7 @@
 #include "orchestrator/db/migrations.h"
 #include "core/text_escape.h"
 #include "engine/json_file.h"
+#include "engine/parameters.h"
 #include "orchestrator/sweep/sweep.h"
 
 namespace beverloo {
@@ -265,6 +266,15 @@ int explain_command(const std::string& dir, const std::string& what) {
   if (x.nearest->engine_version != BEVERLOO_VERSION)
     std::printf("  %-24s this %-16s stored %s\n", "(engine version)", BEVERLOO_VERSION,
                 terminal_safe(x.nearest->engine_version).c_str());
+  // only when it stops differs: the same trajectory, whose run need not start over
+  bool only_stopping_rules = x.nearest->engine_version == BEVERLOO_VERSION && !x.differences.empty();
+  for (const FieldDifference& d : x.differences) {
+    const ParamSpec* row = find_parameter(d.field);
+    only_stopping_rules = only_stopping_rules && row && row->stop_rule;
+  }
+  if (only_stopping_rules)
+    std::printf("continues    only its stopping rules differ (the same trajectory): if it stops later, it continues "
+                "the stored job's final checkpoint instead of starting over (docs/job-file.md, run.min_time)\n");
   return exit_code::kOk;
 }
 

@@ -41,9 +41,21 @@ echo "ok  $(echo "$extended" | wc -w) run(s) given more flow time, each continue
 grep -q "continued by a longer run" "$WORK/fit" || { cat "$WORK/fit"; fail "fit does not say which runs were continued"; }
 echo "ok  the fit takes the longer run of a trajectory, and says so"
 
+# campaign explain: a job that differs from a stored one only in when it stops will continue it
+python3 - "$WORK/job.json" "$WORK/longer.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1])); j["run"]["min_time"] += 100; json.dump(j, open(sys.argv[2], "w"))
+PY
+"$BIN" campaign explain "$WORK/longer.json" --dir "$WORK/clean" > "$WORK/explain"
+grep -q "^continues    only its stopping rules differ" "$WORK/explain" || { cat "$WORK/explain"; fail "explain does not say the job continues"; }
+sed 's/"w": [0-9.]*/"w": 7.25/' "$WORK/longer.json" > "$WORK/other.json"
+"$BIN" campaign explain "$WORK/other.json" --dir "$WORK/clean" > "$WORK/explain"
+grep -q "^continues" "$WORK/explain" && fail "explain says another trajectory continues"
+echo "ok  campaign explain says when a job will continue a stored one"
+
 # killed at random moments: the same decisions, the same results
 RANDOM=7
-run_with_kills "$WORK/sweep.json" "$WORK/chaos" 800
+run_with_kills "$WORK/sweep.json" "$WORK/chaos" 1500
 [ "$kills" -ge 1 ] || fail "the chaos run was never killed"
 [ "$(decisions "$WORK/chaos")" = "$clean" ] || { diff <(echo "$clean") <(decisions "$WORK/chaos"); fail "the killed campaign decided otherwise"; }
 [ "$(results "$WORK/chaos")" = "$(results "$WORK/clean")" ] || fail "the killed campaign's results differ"

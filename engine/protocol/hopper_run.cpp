@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "../geometry/make_hopper.h"
@@ -23,7 +24,16 @@
 namespace beverloo {
 namespace {
 
-std::int64_t steps_for(double time, double dt) { return std::max<std::int64_t>(1, std::llround(time / dt)); }
+/// The steps in `time` at dt, saturated: a time beyond any run (t_max 1e300: "no limit") is a
+/// step count no run reaches, not llround's unspecified result (which ended such a run at its
+/// first step). Half the int64 range, so that a step plus such a count cannot overflow.
+std::int64_t steps_in(double time, double dt) {
+  const double n = time / dt;
+  constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max() / 2;
+  return n >= static_cast<double>(kNever) ? kNever : std::llround(n);
+}
+
+std::int64_t steps_for(double time, double dt) { return std::max<std::int64_t>(1, steps_in(time, dt)); }
 
 /// A checkpoint that is not on this job's trajectory (HopperRun::replay_stopping_rules).
 struct NotOnTrajectory : std::runtime_error {
@@ -270,12 +280,12 @@ void HopperRun<D>::check_containment() const {
 
 template <int D>
 std::int64_t HopperRun<D>::min_steps() const {
-  return std::llround(c_.run.min_time / ts_.dt);
+  return steps_in(c_.run.min_time, ts_.dt);
 }
 
 template <int D>
 std::int64_t HopperRun<D>::max_steps() const {
-  return std::max<std::int64_t>(std::llround(c_.run.t_max / ts_.dt), min_steps());
+  return std::max<std::int64_t>(steps_in(c_.run.t_max, ts_.dt), min_steps());
 }
 
 template <int D>

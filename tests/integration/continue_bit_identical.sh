@@ -39,6 +39,13 @@ sim "$WORK/a.json" -o "$WORK/a"
 ta=$(t_end "$WORK/a")
 echo "a: $(status "$WORK/a") at t = $ta"
 
+# a time limit beyond any run is no limit (not a step count that overflows and stops the run at once)
+with huge t_max 1e300
+sim "$WORK/huge.json" -o "$WORK/huge"
+[ "$(status "$WORK/huge")" = converged ] && [ "$(t_end "$WORK/huge")" = "$ta" ] \
+  || fail "run.t_max 1e300: $(status "$WORK/huge") at t = $(t_end "$WORK/huge"), expected converged at $ta"
+echo "ok  run.t_max 1e300 is no limit"
+
 # a final checkpoint resumes to the same stop: the result removed, --resume writes it again
 mkdir "$WORK/a_again" && cp "$WORK/a/checkpoint.h5" "$WORK/a/job.json" "$WORK/a_again/"
 sim "$WORK/a.json" -o "$WORK/a_again" --resume

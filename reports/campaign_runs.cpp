@@ -12,9 +12,7 @@ namespace beverloo {
 namespace {
 using nlohmann::json;
 std::string fmt(double v, int digits = 4) { return table_number(v, digits); }
-}  // namespace
 
-namespace {
 /// A job without what varies within one series: the width, the replica, the seed, and
 /// run.min_time (a job given more flow time continues its point; no job made before that row
 /// existed carries it, so every earlier series key stays what it was).

@@ -149,6 +149,12 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       lambda.push_back(s->lambda);
       beta_err.push_back(s->fit->beta_err);
     }
+    // a series the group has but cannot fit still holds its lambda: no information (error 0),
+    // but no new series there (it would be the same jobs again, and the group would add nothing)
+    for (const double l : g.unfitted_lambda) {
+      lambda.push_back(l);
+      beta_err.push_back(0);
+    }
     CrossoverAdvice advice;
     try {
       CrossoverTargets t;
@@ -187,7 +193,12 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       stop_group("cannot place lambda = " + num(l_new) + ": " + made.problem);
       continue;
     }
-    const std::set<double>& widths = ta.grid_widths.empty() ? std::set<double>{ta.template_job.at("w").get<double>()} : ta.grid_widths;
+    // the grid's widths: of the nearer series that has some (a series the planner added has
+    // none of its own), else of any series of the group that has
+    std::set<double> widths = !ta.grid_widths.empty() ? ta.grid_widths : jobs[near_b.key].grid_widths;
+    for (const Series* s : g.finite)
+      if (widths.empty()) widths = jobs[s->key].grid_widths;
+    if (widths.empty()) widths = {ta.template_job.at("w").get<double>()};
     for (const double w : widths) {
       json job = *made.job;
       job["w"] = w;

@@ -92,6 +92,9 @@ struct Crossover {
   std::string key, label;
   int dimension = 2;
   std::vector<const Series*> finite;  ///< the finite lambda > 0 series with a fit, by lambda
+  /// the finite lambda of its series without a fit (too few flowing widths): a lambda the group
+  /// has, where the adaptive planner must not place a new series again
+  std::vector<double> unfitted_lambda;
   const Series* limit0 = nullptr;     ///< lambda = 0 (friction only)
   const Series* limit_inf = nullptr;  ///< lambda = inf (drag only)
   std::optional<CrossoverFit> fit;

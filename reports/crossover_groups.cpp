@@ -51,6 +51,8 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
       g.limit_inf = &s;
     else if (s.fit)
       g.finite.push_back(&s);
+    else
+      g.unfitted_lambda.push_back(s.lambda);
   }
   for (auto& [gkey, g] : groups) {
     const std::string zeta_part = gkey.substr(gkey.find("|zeta=") + 6);
@@ -76,7 +78,10 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
     Crossover& g = by_rate_drag[gkey];
     g.key = sha256_hex(gkey);
     g.dimension = s.dimension;
-    if (s.fit) g.finite.push_back(&s);
+    if (s.fit)
+      g.finite.push_back(&s);
+    else
+      g.unfitted_lambda.push_back(s.lambda);
   }
   for (auto& [gkey, g] : by_rate_drag) {
     const std::string base = gkey.substr(0, gkey.find('|'));

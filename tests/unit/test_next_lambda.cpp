@@ -44,6 +44,23 @@ TEST(NextLambda, ANewSeriesGoesOnTheStepAndLowersTheErrors) {
   EXPECT_EQ(again.next->lambda, a.next->lambda);
 }
 
+TEST(NextLambda, ALambdaTheGroupHasWithoutAFitIsNotProposedAgain) {
+  // the planner's case (runs/fig4a_adaptive, 2026-12-04): a series added at the best lambda that
+  // could not be fitted (one flowing width) was proposed again, the same jobs, and the group
+  // stalled; given with error 0 it adds no information but holds its lambda
+  const Group g = exact({1e-4, 1e-3, 0.05, 10, 100});
+  const CrossoverFit f = fit_crossover(2, g.lambda, g.beta, g.beta_err);
+  const CrossoverAdvice first = next_lambda(2, f, g.lambda, g.beta_err, 1e-4, 100, 4);
+  ASSERT_TRUE(first.next.has_value());
+  std::vector<double> lambda = g.lambda, err = g.beta_err;
+  lambda.push_back(first.next->lambda);
+  err.push_back(0);
+  const CrossoverAdvice second = next_lambda(2, f, lambda, err, 1e-4, 100, 4);
+  ASSERT_TRUE(second.next.has_value());
+  EXPECT_GT(std::fabs(std::log10(second.next->lambda / first.next->lambda)), 0.125) << second.next->lambda;
+  EXPECT_NEAR(second.log10_lambda_c_err_now, first.log10_lambda_c_err_now, 1e-12) << "no information from it";
+}
+
 TEST(NextLambda, TargetsMetStopAndAMissingTargetWeighsByThePresentError) {
   const Group g = exact({0.01, 0.03, 0.1, 0.3, 1});
   const CrossoverFit f = fit_crossover(2, g.lambda, g.beta, g.beta_err);

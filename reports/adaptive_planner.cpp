@@ -175,17 +175,19 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       stop_group("budget spent: " + std::to_string(added_series.size()) + " series added (max_added_series), " + errs);
       continue;
     }
-    // the two series nearest the new lambda: bracketing it, or the last two beyond an end
+    // placed between the series that bracket it, the group's limits included (lambda_series.h)
     const double l_new = advice.next->lambda;
-    std::size_t hi = 0;
-    while (hi < g.finite.size() && g.finite[hi]->lambda < l_new) ++hi;
-    const std::size_t a = hi == 0 ? 0 : hi == g.finite.size() ? g.finite.size() - 2 : hi - 1;
-    const Series& near_a = *g.finite[a];
-    const Series& near_b = *g.finite[a + 1];
-    const SeriesJobs& ta = jobs[near_a.key];
+    LambdaGroupJobs group_jobs;
+    for (const Series* s : g.finite) group_jobs.finite.emplace_back(s->lambda, jobs[s->key].template_job);
+    if (g.limit0) group_jobs.limit0 = &jobs[g.limit0->key].template_job;
+    if (g.limit_inf) group_jobs.limit_inf = &jobs[g.limit_inf->key].template_job;
+    // the finite series nearest below it (the lowest beyond the low end): whose grid widths it takes
+    std::size_t below = 0;
+    while (below + 1 < g.finite.size() && g.finite[below + 1]->lambda < l_new) ++below;
+    const SeriesJobs& ta = jobs[g.finite[below]->key];
     LambdaJob made;
     try {  // a lambda the parameter table refuses (a drag rate beyond its range, say) stops the group
-      made = job_at_lambda(ta.template_job, jobs[near_b.key].template_job, l_new);
+      made = job_at_lambda_in_group(group_jobs, l_new);
     } catch (const std::exception& e) {
       made.problem = e.what();
     }
@@ -193,9 +195,9 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       stop_group("cannot place lambda = " + num(l_new) + ": " + made.problem);
       continue;
     }
-    // the grid's widths: of the nearer series that has some (a series the planner added has
-    // none of its own), else of any series of the group that has
-    std::set<double> widths = !ta.grid_widths.empty() ? ta.grid_widths : jobs[near_b.key].grid_widths;
+    // the grid's widths: of that series if it has some (a series the planner added has none of
+    // its own), else of any series of the group that has
+    std::set<double> widths = ta.grid_widths;
     for (const Series* s : g.finite)
       if (widths.empty()) widths = jobs[s->key].grid_widths;
     if (widths.empty()) widths = {ta.template_job.at("w").get<double>()};

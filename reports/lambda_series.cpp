@@ -47,4 +47,21 @@ LambdaJob job_at_lambda(const nlohmann::json& a, const nlohmann::json& b, double
   return out;
 }
 
+LambdaJob job_at_lambda_in_group(const LambdaGroupJobs& group, double lambda) {
+  const auto& f = group.finite;
+  if (f.size() < 2) return LambdaJob{std::nullopt, "the group needs two finite series to place a lambda"};
+  std::size_t hi = 0;
+  while (hi < f.size() && f[hi].first < lambda) ++hi;
+  if (hi == f.size() && group.limit_inf) {  // above every finite series: towards lambda = inf
+    LambdaJob made = job_at_lambda(f.back().second, *group.limit_inf, lambda);
+    if (made.job) return made;
+  }
+  if (hi == 0 && group.limit0) {  // below every finite series: towards lambda = 0
+    LambdaJob made = job_at_lambda(f.front().second, *group.limit0, lambda);
+    if (made.job) return made;
+  }
+  const std::size_t a = hi == 0 ? 0 : hi == f.size() ? f.size() - 2 : hi - 1;
+  return job_at_lambda(f[a].second, f[a + 1].second, lambda);
+}
+
 }  // namespace beverloo

@@ -4,7 +4,8 @@
 # smooth DP, rough DP, smooth DP with the authors' corrected set through the orifice, rough DP
 # with that set, friction only and a thick floor, rough DP with that set and drag only, and the
 # authors' SP options with the lanes rule) with each binary and
-# compares result.h5 (h5dump at 17 digits: every dataset and attribute; the timing attributes
+# compares result.h5 (h5dump at 17 digits: every dataset and attribute, /parameters by the
+# attributes both files have, since a newer binary writes every parameter row there; the timing attributes
 # wall_seconds and particle_steps_per_second aside, and the engine_version and dt_limiting_term labels) and summary.json
 # (timing fields aside).
 # Usage: bench/result_identity.sh OLD_BINARY NEW_BINARY [WORKDIR]
@@ -42,14 +43,25 @@ def dump(d):
     # and the dt's label (a label: 0.5.0 named the contact where the friction set dt)
     for label in ("engine_version", "dt_limiting_term"):
         text = re.sub(r'(ATTRIBUTE "' + label + r'" \{.*?STRSIZE )\d+(;.*?DATA \{\s*\(0\): )"[^"]*"', r'\1*\2"*"', text, flags=re.S)
+    # /parameters is compared on its own (params below): a newer file may carry more attributes
+    text = re.sub(r'\n   GROUP "parameters" \{.*?\n   \}\n', "\n", text, flags=re.S)
     return text.replace(d, "DIR")
+def params(d):
+    text = subprocess.run(["h5dump", "-m", "%.17g", "-g", "/parameters", d + "/result.h5"], check=True,
+                          capture_output=True, text=True).stdout
+    return dict(re.findall(r'\n   ATTRIBUTE "([^"]+)" \{(.*?)\n   \}', text, flags=re.S))
+def params_agree(a, b):
+    # every attribute both files have is equal (the job, the seed, dt, ...); one only a newer
+    # binary writes (a parameter row it writes since) is not a different result
+    pa, pb = params(a), params(b)
+    return "job_json" in pa and all(pa[k] == pb[k] for k in pa.keys() & pb.keys())
 def summary(d):
     s = json.load(open(d + "/summary.json"))
     for k in ("wall_seconds", "particle_steps_per_second", "engine_version", "dt_limiting_term"):
         s.pop(k, None)
     return s
 a, b = sys.argv[1:3]
-same = dump(a) == dump(b) and summary(a) == summary(b)
+same = dump(a) == dump(b) and summary(a) == summary(b) and params_agree(a, b)
 sys.exit(0 if same else 1)
 PY
   then

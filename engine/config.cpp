@@ -33,15 +33,7 @@ constexpr double kMaxFunnelHeight = 1e4;
 
 namespace {
 
-bool applies(ParamModels m, const std::string& model) {
-  switch (m) {
-    case ParamModels::All: return true;
-    case ParamModels::Sp: return model == "sp";
-    case ParamModels::Dp: return model == "dp_smooth" || model == "dp_rough";
-    case ParamModels::DpSmooth: return model == "dp_smooth";
-  }
-  return true;
-}
+bool applies(ParamModels m, const std::string& model) { return parameter_applies(m, model); }
 std::string models_text(ParamModels m) {
   switch (m) {
     case ParamModels::Sp: return "the model \"sp\"";

@@ -288,6 +288,16 @@ const std::vector<ParamSpec>& job_parameters() {
   return table;
 }
 
+bool parameter_applies(ParamModels m, const std::string& model) {
+  switch (m) {
+    case ParamModels::All: return true;
+    case ParamModels::Sp: return model == "sp";
+    case ParamModels::Dp: return model == "dp_smooth" || model == "dp_rough";
+    case ParamModels::DpSmooth: return model == "dp_smooth";
+  }
+  return true;
+}
+
 const ParamSpec* find_parameter(std::string_view path) {
   for (const ParamSpec& p : job_parameters())
     if (p.path == path) return &p;

@@ -89,6 +89,9 @@ struct ParamSpec {
 
 /// Every job parameter, in the order of docs/job-file.md.
 const std::vector<ParamSpec>& job_parameters();
+/// Whether a row applies to a model ("sp", "dp_smooth", "dp_rough"): given for another model it
+/// is an error, and the canonical job leaves it out.
+bool parameter_applies(ParamModels m, const std::string& model);
 /// The row of a path, or nullptr.
 const ParamSpec* find_parameter(std::string_view path);
 

@@ -31,6 +31,32 @@ void write_result_group(hid_t file, const char* name, ResultGroup which, const R
   }
 }
 
+/// Every row of the parameter table that applies to the job's model, under its JSON path
+/// ("E_sp", "dp.K_l", "run.t_max"; booleans and integers as int64), resolved: seed and dt as
+/// the run used them; an optional field left unset (mu_n, ...) is not written. Beside them
+/// lambda (= drag / friction, inf without friction; docs/sweeps.md), which is derived.
+void write_parameter_attributes(hid_t p, const SimConfig& job, const RunResult& r) {
+  SimConfig c = job;  // the accessors are shared with the reader and take a mutable config
+  for (const ParamSpec& row : job_parameters()) {
+    if (!parameter_applies(row.models, c.model) || row.path == "theta_w_deg") continue;  // both sides are rows
+    const std::string name(row.path);
+    const ParamAccess& a = row.access;
+    switch (row.type) {
+      case ParamType::Real: h5::attr(p, name, a.real(c)); break;
+      case ParamType::OptionalReal:
+        if (a.optional_real(c)) h5::attr(p, name, *a.optional_real(c));
+        break;
+      case ParamType::Integer: h5::attr(p, name, std::int64_t{a.integer(c)}); break;
+      case ParamType::Integer64: h5::attr(p, name, a.integer64(c)); break;
+      case ParamType::Boolean: h5::attr(p, name, std::int64_t{a.boolean(c)}); break;
+      case ParamType::Text: h5::attr(p, name, a.text(c)); break;
+      case ParamType::RealOrAuto: h5::attr(p, name, r.dt); break;  // dt: "auto" resolved
+      case ParamType::Seed: h5::attr(p, name, static_cast<std::int64_t>(r.seed)); break;
+    }
+  }
+  h5::attr(p, "lambda", derived::lambda(c).value_or(INFINITY));
+}
+
 }  // namespace
 
 void write_result_file(const std::string& path, const SimConfig& c, const RunResult& r) {
@@ -43,23 +69,7 @@ void write_result_file(const std::string& path, const SimConfig& c, const RunRes
     {
       H5Handle p = h5::create_group(f, "parameters");
       h5::attr(p, "job_json", c.to_json().dump());
-      h5::attr(p, "dimension", std::int64_t{c.dimension});
-      h5::attr(p, "N", std::int64_t{c.N});
-      h5::attr(p, "W", c.W);
-      h5::attr(p, "w", c.w);
-      h5::attr(p, "theta_w_left_deg", c.theta_w_left_deg);
-      h5::attr(p, "theta_w_right_deg", c.theta_w_right_deg);
-      h5::attr(p, "E_sp", c.E_sp);
-      h5::attr(p, "E_w", c.E_w);
-      h5::attr(p, "zeta", c.zeta);
-      h5::attr(p, "mu", c.mu);
-      h5::attr(p, "lambda", derived::lambda(c).value_or(INFINITY));  // docs/sweeps.md
-      // the authors' model options (physics.md 10), written only where a job uses them
-      if (c.mu_n) h5::attr(p, "mu_n", *c.mu_n);
-      if (c.mu_t) h5::attr(p, "mu_t", *c.mu_t);
-      if (c.drag_rate > 0) h5::attr(p, "drag_rate", c.drag_rate);
-      h5::attr(p, "seed", static_cast<std::int64_t>(r.seed));
-      h5::attr(p, "dt", r.dt);
+      write_parameter_attributes(p, c, r);
     }
     write_result_group(f, "result", ResultGroup::Result, r);
     {

@@ -169,6 +169,48 @@ TEST(ResultFields, ResultFileGroupsHoldTheirRows) {
   }
 }
 
+TEST(ResultFields, ParametersGroupHoldsEveryRowOfTheParameterTable) {
+  // one job per model family: the rows that apply to it, each as the job has it, and no other
+  for (const json& job :
+       {json{{"N", 50}, {"W", 12}, {"w", 4}, {"zeta", 0.3}, {"mu", 0.5}, {"mu_n", 0.1}},
+        json{{"model", "dp_smooth"}, {"N", 20}, {"W", 10}, {"w", 4}, {"zeta", 0}, {"mu", 0}, {"drag_rate", 1.5},
+             {"dp", {{"K_l", 88.0}, {"K_l_large", 120.0}}}, {"run", {{"t_max", 42}}}}}) {
+    TempDir dir;
+    SimConfig c = SimConfig::from_json(job);
+    c.resolve_and_validate();
+    const RunResult r = distinct_result();
+    const std::string path = (dir.path / "result.h5").string();
+    write_result_file(path, c, r);
+    H5Handle file = h5::open_file(path);
+    H5Handle p = h5::open_group(file, "parameters");
+    std::set<std::string> expected{"job_json", "lambda"};
+    SimConfig m = c;
+    for (const ParamSpec& row : job_parameters()) {
+      if (!parameter_applies(row.models, c.model) || row.path == "theta_w_deg") continue;
+      const std::string name(row.path);
+      const ParamAccess& a = row.access;
+      switch (row.type) {
+        case ParamType::Real: EXPECT_EQ(h5::attr_double(p, name), a.real(m)) << name; break;
+        case ParamType::OptionalReal:
+          if (!a.optional_real(m)) continue;  // unset: not written
+          EXPECT_EQ(h5::attr_double(p, name), *a.optional_real(m)) << name;
+          break;
+        case ParamType::Integer: EXPECT_EQ(h5::attr_int64(p, name), a.integer(m)) << name; break;
+        case ParamType::Integer64: EXPECT_EQ(h5::attr_int64(p, name), a.integer64(m)) << name; break;
+        case ParamType::Boolean: EXPECT_EQ(h5::attr_int64(p, name), a.boolean(m) ? 1 : 0) << name; break;
+        case ParamType::Text: EXPECT_EQ(h5::attr_string(p, name), a.text(m)) << name; break;
+        case ParamType::RealOrAuto: EXPECT_EQ(h5::attr_double(p, name), r.dt) << name; break;
+        case ParamType::Seed: EXPECT_EQ(h5::attr_int64(p, name), static_cast<std::int64_t>(r.seed)) << name; break;
+      }
+      expected.insert(name);
+    }
+    EXPECT_EQ(attribute_names(p), expected) << c.model;
+    EXPECT_EQ(h5::attr_string(p, "job_json"), c.to_json().dump());
+    EXPECT_TRUE(expected.count(c.model == "sp" ? "mu_n" : "dp.K_l_large")) << c.model;
+    EXPECT_EQ(h5::attr_double(p, "lambda"), derived::lambda(c).value_or(INFINITY));
+  }
+}
+
 /// A migrated store in a temporary directory with one campaign of two jobs.
 struct Store {
   TempDir dir;

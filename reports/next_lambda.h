@@ -9,8 +9,10 @@
 /// series at lambda, fitted to the group's median beta error sigma_new, adds g g^T / sigma_new^2.
 /// The criterion is A-optimal on what users quote: phi = Var(x)/s_x^2 + Var(b)/s_b^2 with s the
 /// targets (a parameter without a target: its present error, so its relative reduction counts),
-/// and the candidate of largest phi_now - phi_after wins. Every series costs about the same (the
-/// same widths, the same error target), so no cost weight, unlike next_width. The information
+/// and the candidate of largest phi_now - phi_after wins. No cost weight, unlike next_width:
+/// along the paper's axes every series costs about the same (the same widths and error target;
+/// measured on Fig. 4a's grid, 1090-2090 t0 per series of 8 widths). Raising the drag beyond
+/// the grid costs more (Q falls as 1/drag), which is why lambda_series.h lowers the friction there. The information
 /// of a point peaks where the sigmoid is steep (|u| < 1): runs go where lambda_c is decided.
 /// Predicted errors are scaled by the fit's reported error over the Fisher one (the fit's errors
 /// may include its chi^2). A step so sharp that no series sits on it leaves the information

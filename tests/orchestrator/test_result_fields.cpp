@@ -102,8 +102,12 @@ TEST(ResultFields, NamesAreUniqueAndEveryRowHasAGetter) {
     EXPECT_TRUE(names.insert(std::string(f.name)).second) << f.name << " twice";
     EXPECT_NE(f.get, nullptr) << f.name;
     EXPECT_FALSE(f.doc.empty()) << f.name;
-    if (f.sql != ResultSql::None) EXPECT_TRUE(f.in_summary) << f.name << ": the store reads its columns from summary.json";
-    if (f.in_runs_view) EXPECT_NE(f.sql, ResultSql::None) << f.name;
+    if (f.sql != ResultSql::None) {
+      EXPECT_TRUE(f.in_summary) << f.name << ": the store reads its columns from summary.json";
+    }
+    if (f.in_runs_view) {
+      EXPECT_NE(f.sql, ResultSql::None) << f.name;
+    }
   }
   EXPECT_EQ(find_result_field("mean_F_friction"), &result_fields()[18]);
   EXPECT_EQ(find_result_field("no_such_field"), nullptr);
@@ -242,7 +246,9 @@ TEST(ResultFields, StoredColumnsAreSchema0001sAndTheOthersAreGenerated) {
   db::Statement v = st.db.prepare("SELECT name FROM pragma_table_info('runs')");
   while (v.step()) view.insert(v.get_text(0));
   for (const ResultField& f : result_fields())
-    if (f.in_runs_view) EXPECT_TRUE(view.count(std::string(f.name))) << f.name << " missing from the runs view";
+    if (f.in_runs_view) {
+      EXPECT_TRUE(view.count(std::string(f.name))) << f.name << " missing from the runs view";
+    }
   EXPECT_TRUE(view.count("t0_per_cpu_minute"));
 }
 

@@ -8,8 +8,8 @@
 ///  - SimConfig::from_json / to_json / resolve_and_validate (engine/config.cpp) read, check and
 ///    write every row (only rules that relate two fields stay written out there);
 ///  - the sweepable axes of the sweep language (orchestrator/sweep);
-///  - the typed SQL columns of parameters added after schema 0005: generated columns over the
-///    stored job JSON, added by the store when it opens a campaign (no migration to write);
+///  - the typed SQL columns of the jobs table: generated columns over the stored job JSON (the
+///    seed excepted), added by the store when it opens a campaign (no migration to write);
 ///  - the parameter tables of docs/job-file.md (`beverloo params --markdown`, checked by a test);
 ///  - the parameter list of schema/sweep.schema.json (checked by a test).
 /// Adding a physics parameter = one row here, the physics code that uses it, its test.

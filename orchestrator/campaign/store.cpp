@@ -64,7 +64,7 @@ std::int64_t CampaignStore::create_campaign(const Sweep& sweep, const std::strin
 
 void CampaignStore::insert_and_link(std::int64_t campaign, const std::vector<const JobSpec*>& jobs,
                                     std::int64_t point_index) {
-  db::Statement insert_job = db_.prepare(db::jobs_insert_sql());  // the parameters' columns from their table
+  db::Statement insert_job = db_.prepare(db::jobs_insert_sql());  // the other parameter columns are generated
   db::Statement link = db_.prepare(
       "INSERT OR IGNORE INTO campaign_jobs (campaign_id, job_key, point_index, sweep_point) VALUES (?1, ?2, ?3, ?4)");
   std::int64_t index = point_index;

@@ -12,8 +12,8 @@
 namespace beverloo::db {
 namespace {
 
-// The runs view's job columns that schema 0001/0003 wrote by hand; the generated parameter
-// columns are appended to them.
+// The runs view's first job columns, in the order schemas 0001 and 0003 gave them (a user's
+// SELECT * keeps its column positions); the parameters added since are appended in table order.
 constexpr const char* kRunsJobColumns =
     "j.key, j.dir, j.state, j.engine_version, j.model, j.dimension, j.N, j.W_container, j.w, j.theta_w_left_deg, j.theta_w_right_deg, "
     "j.E_sp, j.E_w, j.zeta, j.mu, j.lambda, j.dissipation_scale, j.replica, j.seed, "
@@ -28,10 +28,21 @@ std::set<std::string> columns_of(Database& db, const char* table) {
 
 bool stored(const ResultField& f) { return f.sql == ResultSql::Column; }
 
-/// A parameter whose jobs column schema 0001 or 0003 wrote (a real column, filled on insert).
-bool hand_written(const ParamSpec& p) { return !p.sql_column.empty() && !p.omit_at_default; }
+/// The one parameter whose jobs column is stored: the seed the run uses is a hash of the job
+/// when the job gives none, so it cannot be read back from job_json (schema 0010).
+bool stored_parameter(const ParamSpec& p) { return p.type == ParamType::Seed; }
 
-bool is_dp_row(const ParamSpec& p) { return p.models == ParamModels::Dp || p.models == ParamModels::DpSmooth; }
+/// The parameters whose columns schemas 0001 and 0003 created and the runs view lists by hand
+/// (kRunsJobColumns); they are generated since 0010 like the rest, only their place in the view
+/// is older.
+bool in_runs_job_columns(const ParamSpec& p) { return !p.omit_at_default; }
+
+/// The indexes over generated parameter columns: created with the columns (schema 0010 rebuilt
+/// jobs without them). Named as schemas 0001 and 0003 named them.
+constexpr const char* kJobsParameterIndexes[] = {
+    "CREATE INDEX IF NOT EXISTS jobs_physics ON jobs (dimension, lambda, w)",
+    "CREATE INDEX IF NOT EXISTS jobs_dp_shape ON jobs (K_l, K_b)",
+};
 
 /// "INSERT OR IGNORE INTO table (c1, c2, ...) VALUES (?1, ?2, ...)", the columns in bind order.
 std::string insert_sql(const char* table, const std::vector<std::string>& columns) {
@@ -49,38 +60,17 @@ const std::string& jobs_insert_sql() {
   static const std::string sql = [] {
     std::vector<std::string> cols = {"key", "dir", "job_json", "engine_version", "lambda", "dissipation_scale"};
     for (const ParamSpec& p : job_parameters())
-      if (hand_written(p)) cols.emplace_back(p.sql_column);
+      if (!p.sql_column.empty() && stored_parameter(p)) cols.emplace_back(p.sql_column);
     return insert_sql("jobs", cols);
   }();
   return sql;
 }
 
 void bind_parameter_columns(Statement& insert, const SimConfig& config) {
-  SimConfig c = config;  // the accessors give references into a config they may write
   int i = 6;
   for (const ParamSpec& p : job_parameters()) {
-    if (!hand_written(p)) continue;
-    ++i;
-    const ParamAccess& a = p.access;
-    if (is_dp_row(p) && !c.is_dp()) {
-      insert.bind_null(i);
-    } else if (p.type == ParamType::Seed) {
-      insert.bind(i, static_cast<std::int64_t>(c.effective_seed()));
-    } else if (a.real) {
-      insert.bind(i, a.real(c));
-    } else if (a.integer) {
-      insert.bind(i, a.integer(c));
-    } else if (a.integer64) {
-      insert.bind(i, a.integer64(c));
-    } else if (a.boolean) {
-      insert.bind(i, static_cast<std::int64_t>(a.boolean(c)));
-    } else if (a.text) {
-      insert.bind(i, a.text(c));
-    } else if (a.optional_real) {
-      insert.bind(i, a.optional_real(c));
-    } else {
-      throw DbError("parameter " + std::string(p.path) + " has a jobs column but no accessor", SQLITE_MISUSE);
-    }
+    if (p.sql_column.empty() || !stored_parameter(p)) continue;
+    insert.bind(++i, static_cast<std::int64_t>(config.effective_seed()));
   }
 }
 
@@ -118,13 +108,14 @@ void bind_result_columns(Statement& insert, const nlohmann::json& s, const std::
 
 void sync_typed_columns(Database& db) {
   bool added = false;
-  // parameters: the rows added after schema 0005 (the older ones are hand-written columns)
+  // parameters: every row with a column but the seed (schema 0010); a database that has not
+  // reached 0010 cannot be open here (open_store migrates first)
   const std::set<std::string> have_jobs = columns_of(db, "jobs");
   std::string job_columns;
   for (const ParamSpec& p : job_parameters()) {
-    if (p.sql_column.empty() || !p.omit_at_default) continue;
+    if (p.sql_column.empty() || stored_parameter(p)) continue;
     const std::string col(p.sql_column);
-    job_columns += ", j." + col;
+    if (!in_runs_job_columns(p)) job_columns += ", j." + col;
     if (have_jobs.count(col)) continue;
     std::string expr = "json_extract(job_json, '$." + std::string(p.path) + "')";
     if (!p.sql_default.empty()) expr = "coalesce(" + expr + ", " + std::string(p.sql_default) + ")";
@@ -132,6 +123,7 @@ void sync_typed_columns(Database& db) {
             ") VIRTUAL");
     added = true;
   }
+  for (const char* index : kJobsParameterIndexes) db.exec(index);
   // results: every summary field that schema 0001 did not store
   const std::set<std::string> have_results = columns_of(db, "results");
   std::string result_columns;

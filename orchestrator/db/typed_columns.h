@@ -1,9 +1,10 @@
 #pragma once
 /// \file typed_columns.h
 /// \brief Typed SQL columns straight from the engine's two tables:
-///  - job parameters added after schema 0005 (engine/parameters): each a VIRTUAL generated
-///    column of `jobs` over the stored canonical job JSON (json_extract, with the row's SQL
-///    default where the JSON does not carry the field);
+///  - job parameters (engine/parameters): each a VIRTUAL generated column of `jobs` over the
+///    stored canonical job JSON (json_extract, with the row's SQL default where the JSON does not
+///    carry the field), the seed excepted (stored: derived when the job gives none); schema
+///    0010 turned the columns 0001 and 0003 stored into generated ones;
 ///  - result fields (engine/protocol/result_fields): the `results` columns of schema 0001 are
 ///    filled from summary.json by the row (results_insert_sql, bind_result_columns); every other
 ///    summary field is a VIRTUAL generated column of `results` over summary_json;
@@ -29,19 +30,17 @@ namespace beverloo::db {
 /// that no newer beverloo has opened for writing yet.
 inline constexpr const char* kT0PerCpuMinuteSql = "json_extract(r.summary_json, '$.t_end') * 60.0 / r.wall_seconds";
 
-/// Adds the missing generated columns of `jobs` and `results` and, if any were added or the view
-/// is another binary's, rebuilds the `runs` view. Call inside the write transaction of
-/// open_store(). Idempotent.
+/// Adds the missing generated columns of `jobs` and `results` and the indexes over parameter
+/// columns and, if any column was added or the view is another binary's, rebuilds the `runs`
+/// view. Call inside the write transaction of open_store(), after the migrations. Idempotent.
 void sync_typed_columns(Database& db);
 
 /// INSERT OR IGNORE of one `jobs` row: ?1 key, ?2 dir, ?3 job_json, ?4 engine_version, ?5 lambda,
-/// ?6 dissipation_scale (what is not a parameter), then the parameters' columns that schemas
-/// 0001 and 0003 wrote by hand, in parameter-table order (the later ones are generated).
+/// ?6 dissipation_scale (what is not a parameter), then the stored parameter columns (today the
+/// seed alone, ?7); every other parameter column is generated from job_json.
 const std::string& jobs_insert_sql();
-/// Binds those parameter columns (?7 on) from the resolved config through the table's accessors:
-/// the seed column holds the seed the run uses (derived when the job gives none); a DP row is
-/// NULL for an SP job (schema 0003), an SP row keeps its unused value for a DP job (E_sp is NOT
-/// NULL since 0001).
+/// Binds the stored parameter columns (?7 on) from the resolved config: the seed the run uses
+/// (derived when the job gives none).
 void bind_parameter_columns(Statement& insert, const SimConfig& config);
 
 /// INSERT OR IGNORE of one `results` row: ?1 job_key, ?2 attempt_id, then the stored result

@@ -303,18 +303,28 @@ TEST(TypedColumns, JobsColumnsAreParameterRowsAndTheFewThatAreNot) {
   std::set<std::string> plain, generated;
   db::Statement cols = st.db.prepare("SELECT name, hidden FROM pragma_table_xinfo('jobs')");
   while (cols.step()) (cols.get_int(1) == 0 ? plain : generated).insert(cols.get_text(0));
-  // what is not a parameter: identity, derived dissipation, bookkeeping
+  // stored: what is not a parameter (identity, derived dissipation, bookkeeping) and the seed
+  // (derived when the job gives none); every other parameter column is generated (schema 0010)
   std::set<std::string> expected_plain = {"key", "dir", "job_json", "engine_version", "lambda", "dissipation_scale",
-                                          "state", "retries_used", "created_at"},
+                                          "seed", "state", "retries_used", "created_at"},
                         expected_generated;
-  for (const ParamSpec& p : job_parameters()) {
-    if (p.sql_column.empty()) continue;
-    (p.omit_at_default ? expected_generated : expected_plain).insert(std::string(p.sql_column));
-  }
+  for (const ParamSpec& p : job_parameters())
+    if (!p.sql_column.empty() && p.sql_column != "seed") expected_generated.insert(std::string(p.sql_column));
   EXPECT_EQ(plain, expected_plain);
   EXPECT_EQ(generated, expected_generated);
-  // an SP and a DP job: the columns hold the resolved values (the DP ones NULL for SP; E_sp,
-  // unused by DP, keeps its default), the seed the one the run uses
+  // each generated column has its row's SQL type, and the indexes over them exist
+  for (const ParamSpec& p : job_parameters()) {
+    if (p.sql_column.empty()) continue;
+    db::Statement t = st.db.prepare("SELECT type FROM pragma_table_xinfo('jobs') WHERE name = ?1");
+    t.bind(1, std::string(p.sql_column));
+    ASSERT_TRUE(t.step()) << p.sql_column;
+    EXPECT_EQ(t.get_text(0), p.sql_type()) << p.sql_column;
+  }
+  EXPECT_EQ(st.db.scalar_int("SELECT count(*) FROM sqlite_master WHERE type = 'index' AND name IN "
+                             "('jobs_state', 'jobs_physics', 'jobs_dp_shape')"),
+            3);
+  // an SP and a DP job: the columns hold the resolved values (the DP ones NULL for SP, E_sp NULL
+  // for DP: neither job carries the other model's fields), the seed the one the run uses
   const json sweep = {{"base", {{"N", 40}, {"W", 10}, {"zeta", 0.3}, {"mu", 0.0}}},
                       {"sweep", {{"model", {"sp", "dp_smooth"}}, {"w", {4}}}}};
   const Sweep s = Sweep::parse(sweep, "test");
@@ -328,12 +338,13 @@ TEST(TypedColumns, JobsColumnsAreParameterRowsAndTheFewThatAreNot) {
     EXPECT_EQ(q.get_text(0), c.model);
     EXPECT_EQ(q.get_int(1), c.N);
     EXPECT_EQ(q.get_double(2), c.W);
-    EXPECT_EQ(q.get_double(3), c.E_sp);
     EXPECT_EQ(q.get_double(4), c.E_w);
     if (c.is_dp()) {
+      EXPECT_TRUE(q.is_null(3));
       EXPECT_EQ(q.get_double(5), c.dp.K_l);
       EXPECT_EQ(q.get_double(6), c.dp.E_c);
     } else {
+      EXPECT_EQ(q.get_double(3), c.E_sp);
       EXPECT_TRUE(q.is_null(5));
       EXPECT_TRUE(q.is_null(6));
     }

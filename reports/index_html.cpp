@@ -8,6 +8,7 @@
 #include "orchestrator/campaign/job_speed.h"
 #include "orchestrator/campaign/store.h"
 #include "reports/number_format.h"
+#include "reports/paper_claims.h"
 
 namespace beverloo {
 namespace {
@@ -150,6 +151,25 @@ void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
           "<a href=\"beverloo_fits_both_ways.md\">Markdown</a></p>\n";
 }
 
+/// The paper's claims this campaign's fits can test (reports/paper_claims.h), with a verdict each.
+void claims_table(std::ostringstream& html, const CampaignFits& fits) {
+  const std::vector<ClaimCheck> checks = check_paper_claims(fits);
+  if (checks.empty()) return;
+  html << "<h2>The paper's claims this campaign tests</h2>\n<p>Each claim of the paper that these fits can check, "
+          "with the paper's value and beverloo's (docs/paper.md has every claim, with the campaigns that measured "
+          "them). The paper's values carry no errors, so the verdict uses the measurement's: it agrees when the "
+          "difference is at most "
+       << format_value(kClaimAgreeSigmas, 2)
+       << " sigma, sigma the larger of the fit's error and the spread over replicas (z is the difference in "
+          "sigma). A fit that is not determined is not judged. Nothing is rescaled.</p>\n"
+       << "<table><tr><th>claim</th><th>checked on</th><th>paper</th><th>beverloo</th><th>verdict</th></tr>\n";
+  for (const ClaimCheck& c : checks)
+    html << "<tr><td>" << html_escape(c.claim) << "</td><td style=\"text-align:left\">" << html_escape(c.subject)
+         << "</td><td>" << html_escape(c.paper) << "</td><td>" << html_escape(c.measured_text) << "</td><td"
+         << (c.judged && !c.agrees ? " class=flag" : "") << ">" << html_escape(c.verdict) << "</td></tr>\n";
+  html << "</table>\n<p><a href=\"paper_claims.csv\">CSV</a> &middot; <a href=\"paper_claims.md\">Markdown</a></p>\n";
+}
+
 /// Clogging as a result, per w of each series in which some run clogged (Kaplan-Meier).
 void clog_table(std::ostringstream& html, const CampaignFits& fits) {
   bool any = false;
@@ -209,6 +229,7 @@ std::string index_html(db::Database& db, const CampaignFits& fits, const std::ve
   run_summary(html, db);
   fit_tables(html, fits);
   both_ways_table(html, fits);
+  claims_table(html, fits);
   clog_table(html, fits);
   adaptive_table(html, db, fits);
   html << "<h2>Figures</h2>\n";

@@ -7,6 +7,7 @@
 #include "reports/campaign_fits.h"
 #include "reports/figures/figure.h"
 #include "reports/index_html.h"
+#include "reports/paper_claims.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;
@@ -20,6 +21,9 @@ std::vector<ReportFigure> write_report(const std::string& campaign_dir, const st
   const CampaignFits fits = fit_campaign(db);
   store_fits(db, fits);
   write_fit_tables(fits, out_dir);
+  const std::vector<ClaimCheck> claims = check_paper_claims(fits);
+  write_text_atomically((dir / "paper_claims.md").string(), claims_markdown(claims));
+  write_text_atomically((dir / "paper_claims.csv").string(), claims_csv(claims));
   const figures::FigureContext context{fits, db, dir};
   std::vector<ReportFigure> made;
   for (const figures::FigureMaker make : figures::report_figures()) made.push_back(make(context));

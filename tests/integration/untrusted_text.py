@@ -9,7 +9,7 @@ import`, `fit`, `report`, `sweep check`, `sweep expand`, `campaign create` and `
 status` run, and:
 - no payload ran: no canary file exists anywhere, and every figure was rendered;
 - each gnuplot script holds every user string inside a single-quoted literal on one line;
-- beverloo_fits.csv and crossover_fits.csv read back with Python's csv module (RFC 4180) to the
+- beverloo_fits.csv, crossover_fits.csv and paper_claims.csv read back with Python's csv module (RFC 4180) to the
   header's column count, and each series name comes back exactly as it was written;
 - each Markdown table row has exactly its columns (no unescaped pipe), on one line;
 - index.html has no markup from a name (every < of a name arrives as &lt;);
@@ -165,7 +165,7 @@ def main():
                 failures.append(f"{os.path.basename(gp)}: a control character in {line[:120]!r}")
 
     # --- CSV: RFC 4180 round trip ---------------------------------------------------------------
-    for table in ("beverloo_fits.csv", "crossover_fits.csv"):
+    for table in ("beverloo_fits.csv", "crossover_fits.csv", "paper_claims.csv"):
         with open(os.path.join(report, table), encoding="utf-8", newline="") as f:
             rows = list(csv.reader(f))
         width = len(rows[0])
@@ -180,7 +180,7 @@ def main():
                     failures.append(f"{table}: the series {series!r} does not read back: {labels}")
 
     # --- Markdown: one row a line, no unescaped pipe ---------------------------------------------
-    for table in ("beverloo_fits.md", "crossover_fits.md"):
+    for table in ("beverloo_fits.md", "crossover_fits.md", "paper_claims.md"):
         lines = open(os.path.join(report, table), encoding="utf-8").read().rstrip("\n").split("\n")
         columns = len(re.findall(r"(?<!\\)\|", lines[0]))
         for line in lines:
@@ -200,7 +200,8 @@ def main():
         print(f"kept {work}")
         sys.exit(1)
     import shutil
-    shutil.rmtree(work)
+    if not os.environ.get("KEEP_WORK"):
+        shutil.rmtree(work)
     print(f"ok  {len(PAYLOADS)} hostile strings through import, fit, report, sweep and campaign commands: "
           "no payload ran; gnuplot, CSV, Markdown, HTML and terminal output hold them as data")
 

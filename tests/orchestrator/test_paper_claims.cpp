@@ -1,0 +1,179 @@
+// The paper's claims a campaign's fits can test (reports/paper_claims.h): which claims are
+// checked on which series, the verdict rule, and what is left unjudged.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "reports/paper_claims.h"
+
+namespace beverloo {
+namespace {
+
+/// A series at theta_w = 90 with flowing points at w = 4..10 and a fit.
+Series series(const std::string& label, int dimension, double lambda, double beta, double beta_err, double C = 1,
+              double C_err = 0.05, double k = 1.5, double k_err = 0.2) {
+  Series s;
+  s.label = label;
+  s.dimension = dimension;
+  s.N = 1600;
+  s.lambda = lambda;
+  for (double w = 4; w <= 10; ++w) s.points.push_back({w, 10 * w, 0.1, 1, 0, 0});
+  BeverlooFit f;
+  f.beta = beta, f.beta_err = beta_err, f.C = C, f.C_err = C_err, f.k = k, f.k_err = k_err;
+  s.fit = f;
+  return s;
+}
+
+const ClaimCheck* find(const std::vector<ClaimCheck>& checks, const std::string& claim_part, const std::string& subject) {
+  for (const ClaimCheck& c : checks)
+    if (c.claim.find(claim_part) != std::string::npos && c.subject == subject) return &c;
+  return nullptr;
+}
+
+TEST(PaperClaims, LimitExponentsAreCheckedAgainstDMinusAHalfAndDMinusThreeHalves) {
+  CampaignFits fits;
+  fits.series.push_back(series("2D friction", 2, 0, 1.60, 0.04));     // 1.5: z = 2.5, differs
+  fits.series.push_back(series("2D drag", 2, INFINITY, 0.45, 0.05));  // 0.5: z = 1, agrees
+  fits.series.push_back(series("3D drag", 3, INFINITY, 1.45, 0.10));  // 1.5: z = 0.5
+  fits.series.push_back(series("2D finite", 2, 0.1, 1.0, 0.05));      // no limit claim
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* f = find(checks, "friction only (lambda = 0): beta", "2D friction");
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->paper, "1.5 (2D)");
+  EXPECT_TRUE(f->judged);
+  EXPECT_FALSE(f->agrees);
+  EXPECT_EQ(f->verdict, "differs (z = 2.5)");
+  const ClaimCheck* d = find(checks, "drag only (lambda = inf): beta", "2D drag");
+  ASSERT_NE(d, nullptr);
+  EXPECT_TRUE(d->agrees);
+  EXPECT_EQ(d->verdict, "agrees (z = 1.0)");
+  const ClaimCheck* d3 = find(checks, "drag only (lambda = inf): beta", "3D drag");
+  ASSERT_NE(d3, nullptr);
+  EXPECT_EQ(d3->paper, "1.5 (3D)");
+  EXPECT_TRUE(d3->agrees);
+  for (const ClaimCheck& c : checks) EXPECT_NE(c.subject, "2D finite") << c.claim;
+}
+
+TEST(PaperClaims, TheReplicasSpreadWidensSigmaWhenLargerThanTheFitError) {
+  CampaignFits fits;
+  Series s = series("2D friction", 2, 0, 1.65, 0.04);  // z = 3.75 on the fit error alone
+  s.beta_replica_spread = 0.1;                          // z = 1.5 on the spread
+  s.replica_fits = 3;
+  fits.series.push_back(s);
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* c = find(checks, "friction only", "2D friction");
+  ASSERT_NE(c, nullptr);
+  EXPECT_DOUBLE_EQ(c->sigma, 0.1);
+  EXPECT_TRUE(c->agrees);
+  EXPECT_NE(c->measured_text.find("spread 0.1 over 3 replicas"), std::string::npos) << c->measured_text;
+}
+
+TEST(PaperClaims, AFitThatIsNotDeterminedIsNotJudged) {
+  CampaignFits fits;
+  fits.series.push_back(series("2D friction", 2, 0, 1.5, 0.9));  // beta's error 60 %
+  Series negative_k = series("2D drag", 2, INFINITY, 0.5, 0.05);
+  negative_k.fit->k = -1;
+  fits.series.push_back(negative_k);
+  const auto checks = check_paper_claims(fits);
+  for (const ClaimCheck& c : checks) {
+    EXPECT_FALSE(c.judged) << c.claim << ": " << c.verdict;
+    EXPECT_EQ(c.verdict.rfind("not judged: not determined", 0), 0u) << c.verdict;
+  }
+  EXPECT_EQ(checks.size(), 2u) << "no independence claim from undetermined fits";
+}
+
+TEST(PaperClaims, OtherAnglesAndDrainsAreNotCheckedAgainstTheRightAngledHoppersExponents) {
+  CampaignFits fits;
+  Series funnel = series("2D friction 60 deg", 2, 0, 1.5, 0.05);
+  funnel.theta_left = funnel.theta_right = 60;
+  Series drain = series("drain", 2, INFINITY, 0.5, 0.05);
+  drain.drain = true;
+  fits.series.push_back(funnel);
+  fits.series.push_back(drain);
+  EXPECT_TRUE(check_paper_claims(fits).empty());
+}
+
+TEST(PaperClaims, IndependenceComparesTheTwoSeriesOfALimitThatDifferMost) {
+  CampaignFits fits;
+  fits.series.push_back(series("SP", 2, INFINITY, 0.40, 0.03));
+  fits.series.push_back(series("DP rough", 2, INFINITY, 0.60, 0.04));  // 0.2 / 0.05: z = 4
+  fits.series.push_back(series("DP smooth", 2, INFINITY, 0.45, 0.10));
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* c = find(checks, "does not depend on deformability", "SP / DP rough");
+  ASSERT_NE(c, nullptr);
+  EXPECT_NEAR(c->measured, -0.2, 1e-12);
+  EXPECT_NEAR(c->sigma, 0.05, 1e-12);
+  EXPECT_FALSE(c->agrees);
+  EXPECT_EQ(c->verdict, "differs (z = 4.0)");
+  EXPECT_NE(c->claim.find("of 3 series"), std::string::npos);
+}
+
+TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
+  CampaignFits fits;
+  fits.series.push_back(series("friction", 2, 0, 1.5, 0.05, /*C=*/0.5, 0.05));
+  fits.series.push_back(series("drag", 2, INFINITY, 0.5, 0.05, /*C=*/3.5, 0.35));
+  fits.series.push_back(series("mid", 2, 0.05, 1.0, 0.05));
+  Crossover g;
+  g.label = "2D group";
+  g.dimension = 2;
+  g.finite = {&fits.series[2]};
+  g.limit0 = &fits.series[0];
+  g.limit_inf = &fits.series[1];
+  CrossoverFit fixed;
+  fixed.lambda_c = 0.089, fixed.lambda_c_err = 0.005, fixed.b = 0.56, fixed.b_err = 0.05;
+  g.fit = fixed;
+  CrossoverFit free_plateaus;
+  free_plateaus.lambda_c = 0.06, free_plateaus.lambda_c_err = 0.006, free_plateaus.b = 0.96, free_plateaus.b_err = 0.07;
+  g.fit_free = free_plateaus;
+  fits.crossovers.push_back(g);
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* lc = find(checks, "the paper's sigmoid", "2D group");
+  ASSERT_NE(lc, nullptr);
+  EXPECT_EQ(lc->paper, "~0.05 (2D, theta_w = 90)");
+  EXPECT_EQ(lc->verdict, "differs (z = 7.8)");
+  const ClaimCheck* lf = find(checks, "free plateaus", "2D group");
+  ASSERT_NE(lf, nullptr);
+  EXPECT_TRUE(lf->agrees);  // 0.01 / 0.006
+  const ClaimCheck* b = find(checks, "stretching exponent", "2D group");
+  ASSERT_NE(b, nullptr);
+  EXPECT_NEAR(b->measured, 1 / 0.56, 1e-12);  // 1.79 +- 0.16: 4.9 sigma above 1
+  EXPECT_FALSE(b->agrees);
+  const ClaimCheck* C = find(checks, "prefactor C", "drag / friction");
+  ASSERT_NE(C, nullptr);
+  EXPECT_NEAR(C->measured, 7.0, 1e-12);
+  EXPECT_NEAR(C->sigma, 7.0 * std::hypot(0.1, 0.1), 1e-12);
+  EXPECT_FALSE(C->agrees);  // (7 - 3) / 0.99 = 4.0
+}
+
+TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
+  CampaignFits fits;
+  Series measured = series("droplets 45/0", 2, INFINITY, 0.55, 0.10, 1, 0.1, 1.47, 0.3);
+  measured.provenance = "measured";
+  Series simulated = measured;
+  simulated.label = "simulated drain";
+  simulated.provenance = "simulated";
+  fits.series.push_back(measured);
+  fits.series.push_back(simulated);
+  const auto checks = check_paper_claims(fits);
+  ASSERT_EQ(checks.size(), 2u);
+  EXPECT_EQ(checks[0].paper, "~0.49");
+  EXPECT_TRUE(checks[0].agrees);
+  EXPECT_EQ(checks[1].claim, "experiments (Fig. 8): k ~ 1.5");
+  EXPECT_TRUE(checks[1].agrees);
+}
+
+TEST(PaperClaims, TablesEscapeEveryTextCell) {
+  CampaignFits fits;
+  fits.series.push_back(series("a|b,c\"d\n", 2, 0, 1.5, 0.05));
+  const auto checks = check_paper_claims(fits);
+  const std::string md = claims_markdown(checks);
+  EXPECT_EQ(md.find("a|b"), std::string::npos) << md;
+  const std::string csv = claims_csv(checks);
+  EXPECT_NE(csv.find("\"a|b,c\"\"d"), std::string::npos) << csv;
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2 + 1) << "the label's line break stays inside its quoted field";
+}
+
+}  // namespace
+}  // namespace beverloo

@@ -364,6 +364,14 @@ RunResult HopperRun<D>::run() {
     if (step % kContainmentSteps == 0) check_containment();
     if (t - rec_.last_exit_time >= c_.run.t_clog) {
       est = estimator_.estimate(rec_, t);
+      // A draining hopper whose flow stopped with nothing over the opening has no arch: what
+      // remains rests beside the orifice (a flat floor's corners, a dead zone) and will never
+      // leave, as droplets in the experiments' flat-bottomed hoppers do not; that run has
+      // drained what it can, and its N(t) is fitted as theirs is (docs/experiments.md).
+      if (!c_.reinject && bodies_over_opening() == 0)
+        return finish("drained", std::to_string(s_.size()) + " particles remain, none over the orifice (a dead zone " +
+                                     "beside it, not a clog): no exit for t_clog = " + std::to_string(c_.run.t_clog),
+                      est);
       return finish("clogged", "no particle exited for t_clog = " + std::to_string(c_.run.t_clog), est);
     }
     if (!c_.reinject && c_.N - static_cast<std::int64_t>(rec_.exit_time.size()) <= c_.drain.stop_below) {
@@ -403,6 +411,14 @@ RunResult HopperRun<D>::run() {
     }
     if (opt_.progress == ProgressMode::Terminal && (step & 1023) == 0) report_progress(est, false);
   }
+}
+
+template <int D>
+int HopperRun<D>::bodies_over_opening() const {
+  int n = 0;
+  for (int i = 0; i < s_.size(); ++i)
+    n += s_.x[i][D - 1] > 0 && Hopper<D>::lateral(s_.x[i]) < hopper_.orifice_half_width();
+  return n;
 }
 
 template <int D>

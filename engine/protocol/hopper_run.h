@@ -83,6 +83,9 @@ class HopperRun : private StepHook<D> {
   /// Back to the state of a fresh run (an unusable checkpoint was partly read).
   void start_over();
   void check_containment() const;
+  /// Bodies whose centre lies above the orifice plane and over the opening (lateral distance
+  /// from the orifice axis below w/2): an arch that stops a flow holds at least one.
+  int bodies_over_opening() const;
   /// Height above which a particle counts as escaped upward; returns the current top.
   double set_ceiling();
   RunResult finish(const std::string& status, const std::string& reason, const FlowRateEstimate& e);

@@ -19,7 +19,7 @@ inline const char* run_status_meaning(const std::string& status) {
     return "stopped early (run.stop_unreachable): run.t_max could not reach the error target; Q is stored with its error";
   if (status == "clogged") return "the flow stopped: no exit for run.t_clog (Q = 0)";
   if (status == "interrupted") return "stopped by a signal; resumes from its checkpoint";
-  if (status == "drained") return "a draining hopper emptied to drain.stop_below; Q is c0 t0 of dN/dt = -c0 sqrt(N)";
+  if (status == "drained") return "a draining hopper emptied to drain.stop_below, or until only particles beside the orifice (a dead zone) remained; Q is c0 t0 of dN/dt = -c0 sqrt(N)";
   return "";
 }
 

@@ -22,7 +22,7 @@ struct TempDir {
 
 TEST(JobFiles, SpecWrittenIsSpecRead) {
   TempDir d;
-  const job_files::Spec out{"abc123", 3, "tok", 12.5, 2, nlohmann::json{{"w", 4.5}, {"model", "dp_smooth"}}};
+  const job_files::Spec out{"abc123", 3, "tok", 12.5, 2, nlohmann::json{{"w", 4.5}, {"model", "dp_smooth"}}, ""};
   job_files::write_spec(d.path.string(), out);
   const job_files::SpecRead r = job_files::read_spec((d.path / job_files::kSpec).string());
   ASSERT_TRUE(r.spec) << r.problem;

@@ -10,6 +10,10 @@ namespace beverloo {
 bool no_space_left(const std::string& path, std::string_view message) {
   for (std::string_view says : {std::string_view(std::strerror(ENOSPC)), std::string_view("disk is full")})
     if (message.find(says) != std::string_view::npos) return true;
+  return file_system_full(path);
+}
+
+bool file_system_full(const std::string& path) {
   // the job's directory may be the one that could not be made: ask its nearest existing parent
   std::filesystem::path p = path.empty() ? std::filesystem::path(".") : std::filesystem::path(path);
   std::error_code ec;

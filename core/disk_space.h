@@ -18,5 +18,8 @@ inline constexpr std::uint64_t kFullBelowBytes = std::uint64_t{1} << 20;
 /// flushes append; SQLite's "database or disk is full"), or the file system holding `path` (or
 /// its nearest existing parent) has less than kFullBelowBytes available.
 bool no_space_left(const std::string& path, std::string_view message);
+/// True if the file system holding `path` (or its nearest existing parent) has less than
+/// kFullBelowBytes available now (false when that cannot be told).
+bool file_system_full(const std::string& path);
 
 }  // namespace beverloo

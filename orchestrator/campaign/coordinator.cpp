@@ -205,7 +205,7 @@ class Coordinator {
       status = exit->signaled ? 128 + exit->code : exit->code;
       message = exit->signaled ? "worker killed by signal " + std::to_string(exit->code) : last_log_line(dir);
     }
-    if (cls == FailureClass::Io) cls = io_or_disk_full(dir, message);
+    if (cls == FailureClass::Io) cls = io_or_disk_full(dir, message, /*settled_late=*/exit == nullptr);
     if (timed_out_.erase(job.attempt_id) && cls == FailureClass::Interrupted) {
       cls = FailureClass::Timeout;
       message = "exceeded the job timeout of " + std::to_string(o_.job_timeout_s) + " s; will resume from its checkpoint";
@@ -220,9 +220,12 @@ class Coordinator {
 
   /// An I/O failure is disk_full when the file system holding `dir` has no room (core/disk_space.h):
   /// the job is not charged, and the campaign stops claiming (disk_full_) until someone makes room.
-  FailureClass io_or_disk_full(const std::string& dir, const std::string& message) {
+  /// settled_late: an attempt an earlier coordinator left (a worker that outlived the coordinator
+  /// of a full disk and wrote its outcome after it): its failure was for want of room then, but
+  /// the claims stop only if the disk is still full now (someone may have made room since).
+  FailureClass io_or_disk_full(const std::string& dir, const std::string& message, bool settled_late = false) {
     if (!no_space_left(dir, message)) return FailureClass::Io;
-    if (disk_full_.empty()) disk_full_ = dir;
+    if (disk_full_.empty() && (!settled_late || file_system_full(dir))) disk_full_ = dir;
     return FailureClass::DiskFull;
   }
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "core/failures.h"
+#include "core/stop_signal.h"
 #include "local_executor.h"
 #include "orchestrator/campaign/job_files.h"
 
@@ -27,7 +28,16 @@ void LocalExecutor::start(const std::vector<ClaimedJob>& jobs) {
     const std::string lock = (fs::path(job_dir) / job_files::kLock).string();
     const std::string log = (fs::path(job_dir) / job_files::kLog).string();
     const std::string spec = (fs::path(job_dir) / job_files::kSpec).string();
+    // The stop signals stay blocked from before the fork until the worker has installed its
+    // handlers (install_stop_handlers unblocks them): a stop the coordinator sends to a worker
+    // that is still starting (a full disk, a shutdown, a timeout, moments after the claim) is
+    // then held pending and delivered to the handler, and the worker checkpoints and reports
+    // itself interrupted instead of dying of the signal's default action.
+    const sigset_t stop_signals = stop_signal_set();
+    sigset_t before;
+    ::pthread_sigmask(SIG_BLOCK, &stop_signals, &before);
     const pid_t pid = fork();
+    if (pid != 0) ::pthread_sigmask(SIG_SETMASK, &before, nullptr);  // the coordinator's own mask again
     if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
     if (pid == 0) {
       // child: lock the job (inherited across exec), log to the job directory, become the worker
@@ -40,9 +50,9 @@ void LocalExecutor::start(const std::vector<ClaimedJob>& jobs) {
         ::close(logfd);
       }
       ::setpgid(0, 0);  // Ctrl-C reaches the coordinator, which stops the workers in order
-      sigset_t none;    // the coordinator blocks SIGCHLD; the worker starts with a clean mask
-      sigemptyset(&none);
-      ::sigprocmask(SIG_SETMASK, &none, nullptr);
+      // the coordinator blocks SIGCHLD; the worker starts with only the stop signals blocked
+      // (a blocked signal stays pending across exec)
+      ::sigprocmask(SIG_SETMASK, &stop_signals, nullptr);
       execl("/proc/self/exe", "beverloo", "worker", spec.c_str(), static_cast<char*>(nullptr));
       _exit(127);
     }

@@ -7,7 +7,11 @@
 #include <set>
 #include <string>
 
+#include <csignal>
+#include <pthread.h>
+
 #include "core/disk_space.h"
+#include "core/stop_signal.h"
 #include "core/failures.h"
 
 namespace beverloo {
@@ -49,6 +53,33 @@ TEST(DiskSpace, AFullDiskIsToldByItsMessageOrItsFreeSpace) {
   EXPECT_FALSE(no_space_left("/tmp", "permission denied"));
   // a directory that could not be made: its nearest existing parent's file system is asked
   EXPECT_FALSE(no_space_left("/tmp/beverloo-no-such-dir/jobs/abc", "cannot create directory"));
+}
+
+// A local worker starts with the stop signals blocked (local_executor.cpp): a stop sent before
+// its handlers are in place waits, and reaches the handler when install_stop_handlers() unblocks
+// it, instead of killing the worker (a worker stopped moments after its claim died of SIGTERM
+// and was recorded "killed": integration.full_disk failed so under load).
+TEST(StopSignal, AStopSentWhileBlockedReachesTheHandlerOnceInstalled) {
+  const sigset_t set = stop_signal_set();
+  sigset_t before;
+  ASSERT_EQ(pthread_sigmask(SIG_BLOCK, &set, &before), 0);
+  ASSERT_EQ(pthread_kill(pthread_self(), SIGTERM), 0);  // blocked: held pending, not fatal
+  sigset_t pending;
+  sigpending(&pending);
+  EXPECT_TRUE(sigismember(&pending, SIGTERM));
+  const std::atomic<bool>* stop = install_stop_handlers();
+  EXPECT_TRUE(stop->load()) << "the pending stop was delivered to the handler when unblocked";
+  sigset_t now;
+  pthread_sigmask(SIG_SETMASK, nullptr, &now);
+  EXPECT_FALSE(sigismember(&now, SIGTERM));
+  EXPECT_FALSE(sigismember(&now, SIGINT));
+  EXPECT_FALSE(sigismember(&now, SIGUSR1));
+  pthread_sigmask(SIG_SETMASK, &before, nullptr);
+}
+
+TEST(DiskSpace, AFileSystemWithRoomIsNotFull) {
+  EXPECT_FALSE(file_system_full("/tmp"));
+  EXPECT_FALSE(file_system_full("/tmp/beverloo-no-such-dir/jobs/abc"));  // its nearest existing parent
 }
 
 }  // namespace

@@ -66,34 +66,62 @@ void limit_exponents(const CampaignFits& fits, bool friction_only, std::vector<C
   }
 }
 
-/// "beta does not depend on deformability or roughness": within one limit and dimension, the
-/// two determined series whose exponents differ most, in units of their combined sigma.
-void limit_independence(const CampaignFits& fits, bool friction_only, int dimension, std::vector<ClaimCheck>& out) {
-  std::vector<const Series*> in;
+/// The two determined series of one limit, among those `same` puts together with the first and
+/// that differ in what the claim is about (`differ`), whose exponents differ most, in units of
+/// their combined sigma; appended as `claim` (nothing when no such pair exists).
+template <class Same, class Differ>
+void most_different_pair(const CampaignFits& fits, bool friction_only, int dimension, const std::string& claim,
+                         Same same, Differ differ, std::vector<ClaimCheck>& out) {
+  std::vector<const Series*> all;
   for (const Series& s : fits.series)
     if (s.fit && simulated_flow(s) && is_limit(s, friction_only) && s.dimension == dimension && fit_quality(s) == "ok")
-      in.push_back(&s);
-  if (in.size() < 2) return;
+      all.push_back(&s);
   auto sigma = [](const Series* s) {
     return std::isnan(s->beta_replica_spread) ? s->fit->beta_err : std::max(s->fit->beta_err, s->beta_replica_spread);
   };
-  const Series *a = nullptr, *b = nullptr;
-  double worst = -1;
-  for (std::size_t i = 0; i < in.size(); ++i)
-    for (std::size_t j = i + 1; j < in.size(); ++j) {
-      const double z = std::fabs(in[i]->fit->beta - in[j]->fit->beta) / std::hypot(sigma(in[i]), sigma(in[j]));
-      if (z > worst) worst = z, a = in[i], b = in[j];
-    }
-  ClaimCheck c;
-  c.claim = std::string("beta does not depend on deformability or roughness (") + (friction_only ? "lambda = 0" : "lambda = inf") +
-            ", the two of " + std::to_string(in.size()) + " series that differ most)";
-  c.subject = a->label + " / " + b->label;
-  c.paper = "the same beta";
-  c.measured = a->fit->beta - b->fit->beta;
-  c.sigma = std::hypot(sigma(a), sigma(b));
-  c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (difference)";
-  judge(c, 0);
-  out.push_back(c);
+  // groups of series that `same` relates, each checked on its own
+  std::vector<bool> used(all.size(), false);
+  for (std::size_t g = 0; g < all.size(); ++g) {
+    if (used[g]) continue;
+    std::vector<const Series*> in;
+    for (std::size_t i = g; i < all.size(); ++i)
+      if (!used[i] && same(*all[g], *all[i])) in.push_back(all[i]), used[i] = true;
+    const Series *a = nullptr, *b = nullptr;
+    double worst = -1;
+    for (std::size_t i = 0; i < in.size(); ++i)
+      for (std::size_t j = i + 1; j < in.size(); ++j) {
+        if (!differ(*in[i], *in[j])) continue;
+        const double z = std::fabs(in[i]->fit->beta - in[j]->fit->beta) / std::hypot(sigma(in[i]), sigma(in[j]));
+        if (z > worst) worst = z, a = in[i], b = in[j];
+      }
+    if (!a) continue;
+    ClaimCheck c;
+    c.claim = claim + " (" + (friction_only ? "lambda = 0" : "lambda = inf") + ", the two of " +
+              std::to_string(in.size()) + " series that differ most)";
+    c.subject = a->label + " / " + b->label;
+    c.paper = "the same beta";
+    c.measured = a->fit->beta - b->fit->beta;
+    c.sigma = std::hypot(sigma(a), sigma(b));
+    c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (difference)";
+    judge(c, 0);
+    out.push_back(c);
+  }
+}
+
+/// "beta does not depend on deformability or roughness" (series of one N that differ in model
+/// or stiffness) and "beta does not depend on N for N > 800" (Appendix C: series that differ in
+/// N alone, N >= 800).
+void limit_independence(const CampaignFits& fits, bool friction_only, int dimension, std::vector<ClaimCheck>& out) {
+  most_different_pair(
+      fits, friction_only, dimension, "beta does not depend on deformability or roughness",
+      [](const Series& a, const Series& b) { return a.N == b.N; },
+      [](const Series& a, const Series& b) { return a.model != b.model || a.stiffness != b.stiffness; }, out);
+  most_different_pair(
+      fits, friction_only, dimension, "beta does not depend on N for N >= 800 (Appendix C)",
+      [](const Series& a, const Series& b) {
+        return a.N >= 800 && b.N >= 800 && a.model == b.model && a.stiffness == b.stiffness;
+      },
+      [](const Series& a, const Series& b) { return a.N != b.N; }, out);
 }
 
 /// lambda_c as the paper states it (2D: ~0.05 at theta_w = 90, ~6e-3 at 20; 3D: ~0.07 at 90).

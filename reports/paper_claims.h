@@ -3,7 +3,7 @@
 /// \brief The paper's quantitative claims that a campaign's own fits can test (docs/paper.md
 /// has every claim; this is the part a report can check by itself): the exponents in both
 /// dissipation limits (d - 1/2 with friction only, d - 3/2 with drag only, for SP and DP), that
-/// the exponent of a limit does not depend on the model or its stiffness, lambda_c and the
+/// the exponent of a limit does not depend on the model or its stiffness, nor on N >= 800, lambda_c and the
 /// stretching exponent of beta(lambda), the ratio of the prefactors C of the two limits, and
 /// the experiments' beta and k. Each check names the series or group it read, the paper's value,
 /// the measured one with its error (and the replicas' spread where there is one), and a verdict

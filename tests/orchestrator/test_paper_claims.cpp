@@ -100,6 +100,8 @@ TEST(PaperClaims, IndependenceComparesTheTwoSeriesOfALimitThatDifferMost) {
   fits.series.push_back(series("SP", 2, INFINITY, 0.40, 0.03));
   fits.series.push_back(series("DP rough", 2, INFINITY, 0.60, 0.04));  // 0.2 / 0.05: z = 4
   fits.series.push_back(series("DP smooth", 2, INFINITY, 0.45, 0.10));
+  fits.series[1].model = "dp_rough";
+  fits.series[2].model = "dp_smooth";
   const auto checks = check_paper_claims(fits);
   const ClaimCheck* c = find(checks, "does not depend on deformability", "SP / DP rough");
   ASSERT_NE(c, nullptr);
@@ -108,6 +110,31 @@ TEST(PaperClaims, IndependenceComparesTheTwoSeriesOfALimitThatDifferMost) {
   EXPECT_FALSE(c->agrees);
   EXPECT_EQ(c->verdict, "differs (z = 4.0)");
   EXPECT_NE(c->claim.find("of 3 series"), std::string::npos);
+  for (const ClaimCheck& k : checks) EXPECT_EQ(k.claim.find("depend on N"), std::string::npos) << "one N only";
+}
+
+TEST(PaperClaims, NIndependenceComparesOneModelAtDifferentNAndNotAcrossModels) {
+  CampaignFits fits;
+  fits.series.push_back(series("N=800", 2, INFINITY, 0.68, 0.065));
+  fits.series.push_back(series("N=1600", 2, INFINITY, 0.29, 0.019));  // 0.39 / 0.068: z = 5.8
+  fits.series.push_back(series("N=400", 2, INFINITY, 1.2, 0.05));     // below 800: not in the claim
+  fits.series.push_back(series("DP N=800", 2, INFINITY, 0.6, 0.05));  // another model
+  fits.series[0].N = 800;
+  fits.series[2].N = 400;
+  fits.series[3].N = 800;
+  fits.series[3].model = "dp_rough";
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* n = find(checks, "depend on N", "N=800 / N=1600");
+  ASSERT_NE(n, nullptr);
+  EXPECT_NE(n->claim.find("of 2 series"), std::string::npos) << n->claim;
+  EXPECT_FALSE(n->agrees);
+  // the model claim: at N = 800 SP against DP, at N = 1600 nothing to compare
+  const ClaimCheck* m = find(checks, "deformability", "N=800 / DP N=800");
+  ASSERT_NE(m, nullptr);
+  EXPECT_TRUE(m->agrees);
+  int model_claims = 0;
+  for (const ClaimCheck& k : checks) model_claims += k.claim.find("deformability") != std::string::npos;
+  EXPECT_EQ(model_claims, 1);
 }
 
 TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {

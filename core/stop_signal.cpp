@@ -5,13 +5,14 @@
 namespace beverloo {
 namespace {
 std::atomic<bool> g_stop{false};
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGUSR1};
 extern "C" void on_stop_signal(int) { g_stop.store(true, std::memory_order_relaxed); }
 }  // namespace
 
 sigset_t stop_signal_set() {
   sigset_t set;
   sigemptyset(&set);
-  for (int sig : {SIGINT, SIGTERM, SIGUSR1}) sigaddset(&set, sig);
+  for (int sig : kStopSignals) sigaddset(&set, sig);
   return set;
 }
 
@@ -19,7 +20,7 @@ const std::atomic<bool>* install_stop_handlers() {
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
   sigemptyset(&sa.sa_mask);
-  for (int sig : {SIGINT, SIGTERM, SIGUSR1}) sigaction(sig, &sa, nullptr);
+  for (int sig : kStopSignals) sigaction(sig, &sa, nullptr);
   const sigset_t set = stop_signal_set();
   pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
   return &g_stop;

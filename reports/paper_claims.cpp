@@ -33,7 +33,13 @@ void judge(ClaimCheck& c, double paper_value) {
   c.verdict = std::string(c.agrees ? "agrees" : "differs") + " (z = " + z_text(z) + ")";
 }
 
-/// An exponent of a series: its fit's beta, sigma the larger of the fit error and the spread.
+/// The sigma of a series' exponent for a verdict: the larger of the fit error and the spread
+/// over replicas (the fit error alone without replicas).
+double beta_sigma(const Series& s) {
+  return std::isnan(s.beta_replica_spread) ? s.fit->beta_err : std::max(s.fit->beta_err, s.beta_replica_spread);
+}
+
+/// An exponent of a series: its fit's beta with beta_sigma.
 ClaimCheck beta_check(const Series& s, const std::string& claim, const std::string& paper, double paper_value) {
   ClaimCheck c;
   c.claim = claim;
@@ -41,7 +47,7 @@ ClaimCheck beta_check(const Series& s, const std::string& claim, const std::stri
   c.paper = paper;
   c.measured = s.fit->beta;
   const double spread = s.beta_replica_spread;
-  c.sigma = std::isnan(spread) ? s.fit->beta_err : std::max(s.fit->beta_err, spread);
+  c.sigma = beta_sigma(s);
   c.measured_text = format_with_error(s.fit->beta, s.fit->beta_err, " +- ");
   if (!std::isnan(spread))
     c.measured_text += ", spread " + format_value(spread, 2) + " over " + std::to_string(s.replica_fits) + " replicas";
@@ -76,9 +82,6 @@ void most_different_pair(const CampaignFits& fits, bool friction_only, int dimen
   for (const Series& s : fits.series)
     if (s.fit && simulated_flow(s) && is_limit(s, friction_only) && s.dimension == dimension && fit_quality(s) == "ok")
       all.push_back(&s);
-  auto sigma = [](const Series* s) {
-    return std::isnan(s->beta_replica_spread) ? s->fit->beta_err : std::max(s->fit->beta_err, s->beta_replica_spread);
-  };
   // groups of series that `same` relates, each checked on its own
   std::vector<bool> used(all.size(), false);
   for (std::size_t g = 0; g < all.size(); ++g) {
@@ -91,7 +94,7 @@ void most_different_pair(const CampaignFits& fits, bool friction_only, int dimen
     for (std::size_t i = 0; i < in.size(); ++i)
       for (std::size_t j = i + 1; j < in.size(); ++j) {
         if (!differ(*in[i], *in[j])) continue;
-        const double z = std::fabs(in[i]->fit->beta - in[j]->fit->beta) / std::hypot(sigma(in[i]), sigma(in[j]));
+        const double z = std::fabs(in[i]->fit->beta - in[j]->fit->beta) / std::hypot(beta_sigma(*in[i]), beta_sigma(*in[j]));
         if (z > worst) worst = z, a = in[i], b = in[j];
       }
     if (!a) continue;
@@ -101,7 +104,7 @@ void most_different_pair(const CampaignFits& fits, bool friction_only, int dimen
     c.subject = a->label + " / " + b->label;
     c.paper = "the same beta";
     c.measured = a->fit->beta - b->fit->beta;
-    c.sigma = std::hypot(sigma(a), sigma(b));
+    c.sigma = std::hypot(beta_sigma(*a), beta_sigma(*b));
     c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (difference)";
     judge(c, 0);
     out.push_back(c);

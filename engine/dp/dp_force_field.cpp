@@ -74,6 +74,9 @@ DpForceField::DpForceField(const SimConfig& c, const Hopper<2>& hopper, const Po
     // the walls' segments, plus the walls' half thickness
     const double extra = 2 * (cores_.half_thickness() + cores_.offset_from_wall());
     list_.set_wall_diameters({shape.wall[0] + extra, shape.wall[1] + extra});
+    // and they take every vertex a side wall's half-space acts on, at any distance beyond it
+    list_.set_walls_acting_beyond(
+        [this](const Vec<2>& x, double reach) { return cores_.walls_acting_beyond(x, reach); });
     walls_.set_funnel_cores(&cores_);
     corners_.set_funnel_cores(cores_);
   }

@@ -12,10 +12,11 @@
 /// and a vertex's distance to the wall, |r - core| - T/2, is continuous everywhere, negative
 /// inside the wall: the wall keeps pushing a vertex that has entered it back out, up to an
 /// energy (E_w/2)(1 + T/sigma_w)^2 at the core, where a line wall (T = 0) gives way at E_w/2.
-/// Below the core line (the slab's lower half and beyond), as in the authors' code, where the
-/// bottom wall pushes a vertex back up from any depth (hopper2D.cpp ~1745-1760: a half-space in
-/// the hopper's bulk), the slab pushes back into the container: d = -T/2 - |s| with s the
-/// depth below the core line. Within T of the lip (along the wall) it turns over smoothly to
+/// Below the core line (the slab's lower half), as in the authors' code, where the bottom
+/// wall's force grows with a vertex's depth down to the exit plane T below the surface
+/// (hopper2D.cpp ~1745-1760) and nothing acts beyond, the slab pushes back into the container:
+/// d = -T/2 - |s| with s the depth below the core line; under the slab's bottom the capsule's
+/// distance holds again (the floor's underside, engine 0.6.2). Within T of the lip (along the wall) it turns over smoothly to
 /// the lip's push outward, d = -T/2 + |s| (1 - 2 t / T) at a distance t along the core, so that
 /// the distance (and the energy) stays continuous everywhere (engine 0.6.0; 0.5.0 took the
 /// capsule everywhere and pushed a vertex past the core out through the floor: friction-only
@@ -39,6 +40,10 @@ class FunnelCores {
       n_[k] = n;
       len_[k] = hopper.wall_length(k) - half_;  // ends under the wall's far end (a ray stays a ray)
     }
+    for (int k = 2; k < 4; ++k) {
+      side_[k - 2] = hopper.has_wall(k);
+      side_start_[k - 2] = hopper.wall_start(k);
+    }
   }
   double half_thickness() const { return half_; }
   /// The lip's centre at orifice edge k (the core's start).
@@ -48,12 +53,18 @@ class FunnelCores {
     t = t < 0 ? 0 : (t > len_[k] ? len_[k] : t);
     return a_[k] + t * u_[k];
   }
-  /// Whether p lies below core k's line within the core's span (the slab's region, where the
-  /// distance is the slab's, below); elsewhere it is the capsule's |p - nearest_point| - T/2.
+  /// Whether p lies in the slab's lower half: below core k's line, above the slab's bottom (T
+  /// behind the surface, the authors' exit plane), within the core's span (the distance is the
+  /// slab's, below); elsewhere it is the capsule's |p - nearest_point| - T/2, which under the
+  /// slab's bottom is its underside: a vertex there (one that swung round the lip from the
+  /// orifice) is pushed down, away from the floor, within its own reach, and nothing acts
+  /// further down. (Engine 0.6.0 and 0.6.1 took the slab's push up to any depth, as far as the
+  /// list's wall masks happened to reach: an exited vertex falling just beside the lip was
+  /// pulled up hard or not at all, depending on when the list was built.)
   bool in_slab_region(int k, const Vec<2>& p) const {
     const Vec<2> q = p - a_[k];
-    const double t = q.dot(u_[k]);
-    return q.dot(n_[k]) < 0 && t > 0 && t < len_[k];
+    const double t = q.dot(u_[k]), s = q.dot(n_[k]);
+    return s < 0 && s >= -half_ && t > 0 && t < len_[k];
   }
   /// In the slab's region: the distance d of p from funnel wall k's surface (negative: inside),
   /// -T/2 - s g(t) with s < 0 the signed distance from the core line and g = 1 - 2t/T within T
@@ -70,6 +81,23 @@ class FunnelCores {
   bool contains(int k, const Vec<2>& p) const {
     if ((p - nearest_point(k, p)).squaredNorm() <= half_ * half_) return true;
     return in_slab_region(k, p) && (p - a_[k]).dot(n_[k]) >= -half_;
+  }
+  /// The walls (bits 1 << k, Hopper<2>'s numbering) whose force may act on a point within
+  /// `reach` of x beyond their reach from the wall's line: a side wall where x is within
+  /// `reach` of the half-space beyond it (above its start; HopperWalls::add_side pushes back
+  /// from any distance). The funnel walls act within T + a vertex's reach of their line, which
+  /// the masks' reach covers (DpForceField). The walls' list masks take these bits (NeighborList::
+  /// set_walls_acting_beyond), so that a vertex's wall force depends on where it is, not on
+  /// where it was when the list was built.
+  std::uint8_t walls_acting_beyond(const Vec<2>& x, double reach) const {
+    std::uint8_t mask = 0;
+    for (int k = 2; k < 4; ++k) {
+      if (!side_[k - 2]) continue;
+      const Vec<2>& a = side_start_[k - 2];
+      const double inward = k == 2 ? 1.0 : -1.0;  // the left side wall's inside is +x
+      if (x[1] > a[1] - reach && (x[0] - a[0]) * inward < reach) mask |= std::uint8_t(1u << k);
+    }
+    return mask;
   }
   /// Every core point lies within this distance of its wall's segment (the lip's centre is
   /// the farthest): the walls' list reach grows by it and by T/2.
@@ -92,6 +120,8 @@ class FunnelCores {
   double half_;
   Vec<2> a_[2], u_[2], n_[2];
   double len_[2];
+  bool side_[2];  ///< side walls 2 and 3 present (no side wall beside a vertical funnel wall)
+  Vec<2> side_start_[2];
 };
 
 }  // namespace beverloo

@@ -169,8 +169,8 @@ void NeighborList<D>::start_build(const ParticleState<D>& s) {
 }
 
 template <int D>
-std::uint8_t NeighborList<D>::walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper) {
-  std::uint8_t mask = 0;
+std::uint8_t NeighborList<D>::walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper) const {
+  std::uint8_t mask = walls_beyond_ ? walls_beyond_(x, reach) : 0;
   for (int w = 0; w < Hopper<D>::kNumWalls; ++w)
     if (!hopper.beyond(w, x, reach) && (x - hopper.nearest_point(w, x)).squaredNorm() < reach * reach)
       mask |= std::uint8_t(1u << w);

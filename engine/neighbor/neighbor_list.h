@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "../geometry/hopper.h"
@@ -143,6 +144,17 @@ class NeighborList {
     own_wall_diameters_ = true;
     force_ = true;
   }
+  /// Walls whose force reaches deeper behind them than any reach (DP thick walls: a funnel
+  /// wall's slab pushes a vertex back up from any depth, a side wall a vertex beyond it,
+  /// FunnelCores::walls_acting_beyond): `beyond(x, reach)` gives the bits of the walls whose
+  /// force may act on an item within `reach` of x, and the wall masks take them too. Without
+  /// it a deep item's wall force would depend on where it was at the last build (so on when
+  /// the list was built, and a resumed run, whose list is built afresh, would leave the
+  /// uninterrupted one).
+  void set_walls_acting_beyond(std::function<std::uint8_t(const Vec<D>&, double)> beyond) {
+    walls_beyond_ = std::move(beyond);
+    force_ = true;
+  }
   void set_extra_reach(const std::vector<double>* extra) {
     extra_ = extra;
     force_ = true;
@@ -219,8 +231,8 @@ class NeighborList {
   void make_pair_runs(const std::uint8_t* species);
   /// slot_row_ (the row of every slot of nbr_), if not made since the last build or restore.
   void index_slots();
-  /// The walls within reach of a particle at x (a bit per wall).
-  static std::uint8_t walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper);
+  /// The walls within reach of a particle at x (a bit per wall), and those acting beyond.
+  std::uint8_t walls_in_reach(const Vec<D>& x, double reach, const Hopper<D>& hopper) const;
 
   bool excluded(int i, int j) const {
     if (!group_) return false;
@@ -264,6 +276,7 @@ class NeighborList {
   bool run_fresh_ = false, slots_indexed_ = false;
   bool blocks_on_ = false;
   std::vector<std::uint8_t> wall_mask_;
+  std::function<std::uint8_t(const Vec<D>&, double)> walls_beyond_;
   // cell grid (counting sort), kept between builds so that builds allocate nothing
   std::vector<int> cell_of_, cell_start_, cell_items_, cursor_, order_;
   /// build(): each cell item's position, species, extra reach and group, in cell order

@@ -1,6 +1,8 @@
 #include "job_explain.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -68,6 +70,24 @@ std::pair<std::string, nlohmann::json> find_stored_job(db::Database& db, const s
   return {hits[0].first, nlohmann::json::parse(hits[0].second)};
 }
 
+namespace {
+/// How far apart the differing values are: per field |a - b| / max(|a|, |b|) for two numbers,
+/// 1 otherwise (a text, an absent field); summed.
+double relative_spread(const std::vector<FieldDifference>& diff) {
+  double sum = 0;
+  for (const FieldDifference& d : diff) {
+    char* end_a = nullptr;
+    char* end_b = nullptr;
+    const double a = std::strtod(d.asked.c_str(), &end_a), b = std::strtod(d.stored.c_str(), &end_b);
+    const bool numbers = !d.asked.empty() && !d.stored.empty() && *end_a == '\0' && *end_b == '\0' &&
+                         std::isfinite(a) && std::isfinite(b);
+    const double scale = std::max(std::fabs(a), std::fabs(b));
+    sum += numbers ? (scale > 0 ? std::fabs(a - b) / scale : 0.0) : 1.0;
+  }
+  return sum;
+}
+}  // namespace
+
 JobExplanation explain_job(db::Database& db, const std::string& key, const nlohmann::json& job,
                            const std::vector<std::string>& identity_free) {
   JobExplanation out;
@@ -81,9 +101,11 @@ JobExplanation explain_job(db::Database& db, const std::string& key, const nlohm
     if (!self.state.empty()) out.found = self;
   }
   if (out.found && (out.found->state == "done" || out.found->state == "clogged")) return out;
-  // the nearest done (or clogged) job: fewest differing identity fields; ties by key
+  // the nearest done (or clogged) job: fewest differing identity fields; among those the
+  // smallest relative differences of the numbers (w = 5.5 is nearer 6 than 2.2); then by key
   db::Statement all = db.prepare("SELECT key, job_json, engine_version FROM jobs WHERE state IN ('done', 'clogged') ORDER BY key");
   std::size_t best = SIZE_MAX;
+  double best_spread = 0;
   std::string best_key;
   std::vector<FieldDifference> best_diff;
   while (all.step()) {
@@ -110,8 +132,11 @@ JobExplanation explain_job(db::Database& db, const std::string& key, const nlohm
     }
     for (const auto& [path, value] : theirs)
       if (!asked.count(path)) diff.push_back({path, "(absent)", value});
-    if (diff.size() < best) {
+    if (diff.size() > best) continue;
+    const double spread = relative_spread(diff);
+    if (diff.size() < best || spread < best_spread) {
       best = diff.size();
+      best_spread = spread;
       best_key = k;
       best_diff = std::move(diff);
     }

@@ -6,18 +6,16 @@
 // Usage: dp_trace_polygon JOB.json CHECKPOINT.h5 polygon t_stop keep [print_every]
 #include <cstdio>
 #include <deque>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/config.h"
 #include "engine/dp/dp_system.h"
 #include "engine/protocol/hopper_run.h"
+#include "resumed_run.h"
 
 using namespace beverloo;
 
@@ -47,18 +45,8 @@ int main(int argc, char** argv) {
   const double t_stop = std::atof(argv[4]);
   const std::size_t keep = static_cast<std::size_t>(std::atol(argv[5]));
   const int print_every = argc > 6 ? std::atoi(argv[6]) : 1;
-  // resumed as `simulate --resume` does (prepare(): the checkpoint, then the flow's forces,
-  // gravity and lists), from a directory of its own
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("dp_trace_polygon." + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  fs::copy_file(argv[2], dir / "checkpoint.h5", fs::copy_options::overwrite_existing);
-  RunOptions options;
-  options.output_dir = dir.string();
-  options.resume = true;
-  HopperRun<2> run(c, options);
-  run.prepare();
-  fs::remove_all(dir);
+  auto resumed = diagnostics::resumed_run(c, argv[2], "dp_trace_polygon");
+  HopperRun<2>& run = *resumed;
   DpSystem& dp = *run.dp();
   const PolygonSet& p = dp.polygons();
   std::vector<int> mine;

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <string>
 
 #include <unistd.h>
@@ -17,6 +16,7 @@
 #include "engine/config.h"
 #include "engine/dp/dp_system.h"
 #include "engine/protocol/hopper_run.h"
+#include "resumed_run.h"
 
 using namespace beverloo;
 
@@ -28,6 +28,7 @@ double difference(HopperRun<2>& a, HopperRun<2>& b, bool& identical) {
   const ParticleState<2>&pa = points(a), &pb = points(b);
   double worst = 0;
   identical = pa.size() == pb.size();
+  if (!identical) return 0;
   for (int i = 0; i < pa.size(); ++i) {
     if (identical && (pa.x[i] != pb.x[i] || pa.v[i] != pb.v[i])) {
       identical = false;
@@ -48,28 +49,16 @@ int main(int argc, char** argv) {
   const SimConfig c = SimConfig::from_json(nlohmann::json::parse(in));
   const std::int64_t n = std::atoll(argv[3]), m = std::atoll(argv[4]);
   const std::int64_t every = argc > 5 ? std::atoll(argv[5]) : 1;
-  // each run resumes as `simulate --resume` does (prepare(): the checkpoint, then the flow's
-  // forces, gravity and lists), from a directory of its own
-  namespace fs = std::filesystem;
-  const fs::path base = fs::temp_directory_path() / ("resume_identity." + std::to_string(::getpid()));
-  auto resumed_from = [&](const fs::path& checkpoint, const char* name) {
-    const fs::path dir = base / name;
-    fs::create_directories(dir);
-    fs::copy_file(checkpoint, dir / "checkpoint.h5", fs::copy_options::overwrite_existing);
-    RunOptions o;
-    o.output_dir = dir.string();
-    o.resume = true;
-    auto run = std::make_unique<HopperRun<2>>(c, o);
-    run->prepare();
-    return run;
-  };
-  auto a = resumed_from(argv[2], "a");
-  auto b = resumed_from(argv[2], "b");
+  // each run resumes as `simulate --resume` does (diagnostics::resumed_run)
+  auto a = diagnostics::resumed_run(c, argv[2], "resume_identity_a");
+  auto b = diagnostics::resumed_run(c, argv[2], "resume_identity_b");
   a->advance(n);
   b->advance(n);
-  b->save_checkpoint((base / "mid.h5").string());
-  auto r = resumed_from(base / "mid.h5", "r");
-  fs::remove_all(base);
+  const std::filesystem::path mid =
+      std::filesystem::temp_directory_path() / ("resume_identity_mid." + std::to_string(::getpid()) + ".h5");
+  b->save_checkpoint(mid.string());
+  auto r = diagnostics::resumed_run(c, mid, "resume_identity_r");
+  std::filesystem::remove(mid);
   bool identical = true;
   difference(*a, *r, identical);
   std::printf("at the checkpoint (step %lld): %s\n", static_cast<long long>(a->state().step),

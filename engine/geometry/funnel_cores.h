@@ -80,7 +80,7 @@ class FunnelCores {
   /// Whether p is in funnel wall k: within T/2 of its core, or in its slab down to the bottom.
   bool contains(int k, const Vec<2>& p) const {
     if ((p - nearest_point(k, p)).squaredNorm() <= half_ * half_) return true;
-    return in_slab_region(k, p) && (p - a_[k]).dot(n_[k]) >= -half_;
+    return in_slab_region(k, p);  // the slab's lower half ends at its bottom
   }
   /// The walls (bits 1 << k, Hopper<2>'s numbering) whose force may act on a point within
   /// `reach` of x beyond their reach from the wall's line: a side wall where x is within

@@ -144,8 +144,8 @@ class NeighborList {
     own_wall_diameters_ = true;
     force_ = true;
   }
-  /// Walls whose force reaches deeper behind them than any reach (DP thick walls: a funnel
-  /// wall's slab pushes a vertex back up from any depth, a side wall a vertex beyond it,
+  /// Walls whose force reaches farther behind them than any reach (DP thick walls: a side
+  /// wall pushes a vertex back in from any distance beyond it,
   /// FunnelCores::walls_acting_beyond): `beyond(x, reach)` gives the bits of the walls whose
   /// force may act on an item within `reach` of x, and the wall masks take them too. Without
   /// it a deep item's wall force would depend on where it was at the last build (so on when

@@ -49,6 +49,15 @@ TEST(JobExplain, CachedJobsAreFoundAndOthersShowTheirNearestFinishedJob) {
     ASSERT_EQ(x.differences.size(), 1u);
     EXPECT_EQ(x.differences[0].field, "w");
     EXPECT_EQ(x.differences[0].asked, "5.0");
+    // of the two finished jobs that differ in w alone (4 and 7), the nearer number: 4
+    EXPECT_EQ(x.nearest->key, jobs[0].key);
+    EXPECT_EQ(x.differences[0].stored, "4.0");
+    SimConfig w65 = jobs[0].config;
+    w65.w = 6.5;
+    w65.resolve_and_validate();
+    x = explain_job(db, job_key(w65), w65.to_json(), identity_free(w65));
+    ASSERT_TRUE(x.nearest);
+    EXPECT_EQ(x.nearest->key, jobs[2].key) << "w = 6.5 is nearer 7 than 4";
 
     // a new job differing in two identity fields and one free field (the skin)
     SimConfig c = jobs[0].config;

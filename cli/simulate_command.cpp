@@ -35,7 +35,18 @@ struct SimulateArgs {
   int threads = 1;
 };
 
-SimConfig read_job(const std::string& path) { return SimConfig::from_json(read_json_file(path)); }
+/// The job file's errors name the file (read_json_file's own already do), then the field.
+SimConfig read_job(const std::string& path) {
+  const nlohmann::json j = read_json_file(path);
+  try {
+    SimConfig c = SimConfig::from_json(j);
+    (void)choose_time_step(c);  // refuse an unstable explicit dt before anything is written
+    check_memory(c);            // and a job this machine cannot hold
+    return c;
+  } catch (const ConfigError& e) {
+    throw ConfigError(path, e.what());
+  }
+}
 
 void print_summary(const RunResult& r, const SimConfig& c) {
   std::printf("status        %s (%s)\n", terminal_safe(r.status).c_str(), terminal_safe(r.stop_reason).c_str());
@@ -61,8 +72,6 @@ int run_simulate(const SimulateArgs& a) {
   SimConfig c;
   try {
     c = read_job(a.job_path);
-    (void)choose_time_step(c);  // refuse an unstable explicit dt before anything is written
-    check_memory(c);            // and a job this machine cannot hold
     check_threads("--threads", a.threads);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "beverloo simulate: configuration error: %s\n", terminal_safe(e.what()).c_str());

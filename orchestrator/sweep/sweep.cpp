@@ -291,7 +291,15 @@ Sweep Sweep::load(const std::string& path, std::string* text) {
     const std::string what = e.what();
     throw SweepError(path, what.substr(e.field().size() + 2));
   }
-  return parse(j, std::filesystem::path(path).stem().string());
+  try {
+    Sweep s = parse(j, std::filesystem::path(path).stem().string());
+    s.file = path;
+    return s;
+  } catch (const SweepError& e) {
+    throw SweepError(path, e.what());
+  } catch (const ConfigError& e) {
+    throw SweepError(path, e.what());
+  }
 }
 
 Sweep Sweep::parse(const json& j, const std::string& default_name) {
@@ -336,6 +344,17 @@ Sweep Sweep::parse(const json& j, const std::string& default_name) {
 }
 
 std::vector<JobSpec> Sweep::expand() const {
+  if (file.empty()) return expand_points();
+  try {
+    return expand_points();
+  } catch (const SweepError& e) {
+    throw SweepError(file, e.what());
+  } catch (const ConfigError& e) {
+    throw SweepError(file, e.what());
+  }
+}
+
+std::vector<JobSpec> Sweep::expand_points() const {
   const json& j = source;
   std::vector<Point> points = j.contains("sweep") ? expand_node(j["sweep"], "sweep") : std::vector<Point>{Point{}};
   const long replicas = j.value("replicas", 1L);

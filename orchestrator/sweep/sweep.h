@@ -53,6 +53,10 @@ struct JobSpec {
 struct Sweep {
   std::string name, comment;
   nlohmann::json source;  ///< the file as parsed
+  /// The file it was read from (load), empty when parsed from JSON: the errors of load() and
+  /// expand() then start with it, "FILE: FIELD: reason", so a user with several sweeps open
+  /// sees which one is wrong.
+  std::string file;
   /// Parses and checks the structure; throws SweepError.
   static Sweep parse(const nlohmann::json& j, const std::string& default_name = "sweep");
   /// Reads and parses a sweep file (named after the file unless it says otherwise); the file's
@@ -60,6 +64,9 @@ struct Sweep {
   static Sweep load(const std::string& path, std::string* text = nullptr);
   /// All jobs, each validated by the engine's own rules; throws SweepError naming the path.
   std::vector<JobSpec> expand() const;
+
+ private:
+  std::vector<JobSpec> expand_points() const;
 };
 
 /// The job key: sha256 of the canonical job (without settings that cannot change the result:

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bad job files: exit 2, a message naming the field, and nothing written.
+# Bad job files: exit 2, a message naming the file and the field, and nothing written.
 source "$(dirname "$0")/lib.sh"
 check() {  # name, expected text in the message, job json
   local name=$1 expect=$2 job=$3
@@ -10,6 +10,8 @@ check() {  # name, expected text in the message, job json
   set -e
   [ "$rc" -eq 2 ] || fail "$name: exit $rc, expected 2"
   grep -q -- "$expect" "$WORK/err" || fail "$name: message does not name '$expect': $(cat "$WORK/err")"
+  # the file first, so that a user with several job files open sees which one is wrong
+  grep -qF -- "$WORK/$name.json: " "$WORK/err" || fail "$name: message does not name the file: $(cat "$WORK/err")"
   [ ! -e "$WORK/out-$name" ] || fail "$name: wrote $WORK/out-$name"
   echo "ok  $name: $(cat "$WORK/err")"
 }

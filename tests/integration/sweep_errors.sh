@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every bad sweep file: exit 2, the message names the JSON path, value and rule, and a campaign
+# Every bad sweep file: exit 2, the message names the file, the JSON path, value and rule, and a campaign
 # database in the target directory is left byte for byte as it was.
 source "$(dirname "$0")/lib.sh"
 DATA="$(dirname "$0")/../data/bad_sweeps"
@@ -24,6 +24,7 @@ while IFS='|' read -r name verdict expect; do
     set -e
     [ "$rc" -eq 2 ] || fail "$name ($cmd): exit $rc, expected 2: $(cat "$WORK/err")"
     grep -qF -- "$expect" "$WORK/err" || fail "$name ($cmd): expected '$expect', got: $(cat "$WORK/err")"
+    grep -qF -- "$DATA/$name.json: " "$WORK/err" || fail "$name ($cmd): the message does not name the file: $(cat "$WORK/err")"
   done
   n=$((n + 1))
 done < "$DATA/expected_errors.txt"

@@ -134,9 +134,22 @@ void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double da, Ac
   // The margin keeps rounding from ever skipping a pair that edge_vertex would count.
   const double dmn = 0.5 * (s.width[s.species[a]] + s.width[s.species[b]]);
   auto may_touch = [&](int edge_start) { return da <= (dmn * dmn + 0.25 * s.edge_sq[edge_start]) * (1 + 1e-9); };
-  if (b != s.next[an] && may_touch(a) && da <= dist2(an))
+  // And b farther than the width from the edge's line, |(r_b - r_start) x e| > dmn |e|, is in
+  // contact with neither its slab (the slab's d is that distance) nor its start corner (the
+  // corner is on the line: at least as far). Most pairs that pass may_touch end here, before
+  // edge_vertex's division and square root (about 4 in 5 in a dense smooth pile). Squared
+  // with a margin far above the cross product's rounding (a few ulp of |q||e| < |e|), so no
+  // pair that edge_vertex would count is skipped: the same bits.
+  const Vec<2> rb = s.x[b];
+  auto off_line = [&](const Vec<2>& start, const Vec<2>& end, double e2) {
+    const Vec<2> q = rb - start, e = end - start;
+    const double cross = q[0] * e[1] - q[1] * e[0];
+    return cross * cross > dmn * dmn * e2 * (1 + 1e-9);
+  };
+  const Vec<2> ra = s.x[a];
+  if (b != s.next[an] && may_touch(a) && da <= dist2(an) && !off_line(ra, s.x[an], s.edge_sq[a]))
     edge_vertex<kMode>(s, a, b, acc, sink);  // edge a -> next
-  if (b != s.prev[ap] && may_touch(ap) && da < dist2(ap))
+  if (b != s.prev[ap] && may_touch(ap) && da < dist2(ap) && !off_line(s.x[ap], ra, s.edge_sq[ap]))
     edge_vertex<kMode>(s, ap, b, acc, sink);  // edge prev -> a
   if constexpr (kMode != Mode::FrictionOnly)
     if (corners_ && da < dmn * dmn && b != an && b != ap) corner_in_both_slabs(s, a, b, da, dmn, acc, sink);
@@ -190,26 +203,49 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, cons
   // overlap) are its own and are added in chunk order, whatever the thread count.
   const int chunks = pairs_ ? (n + kRowsPerChunk - 1) / kRowsPerChunk : 0;
   if (static_cast<int>(chunk_acc_.size()) < chunks) chunk_acc_.resize(chunks);  // only when N grows
+  // The list's pairs as one flat run in row order (NeighborList::pairs_begin: rows are short,
+  // 0-2 entries in a pile, and a loop per row paid a mispredicted branch at most rows' ends),
+  // and per chunk of rows its first pair: the pairs of rows below a bound, pair_i increasing.
+  const int* PI = nullptr;
+  const int* PJ = nullptr;
+  if (pairs_) {
+    list_.update_block_lists(s.species.data());
+    PI = list_.pair_i();
+    PJ = list_.pair_j();
+    const int run_end = list_.pairs_begin(1);
+    if (static_cast<int>(chunk_pairs_.size()) < chunks + 1) chunk_pairs_.resize(chunks + 1);  // only when N grows
+    for (int c = 0; c <= chunks; ++c)
+      chunk_pairs_[c] = c == chunks ? run_end
+                                    : static_cast<int>(std::lower_bound(PI, PI + run_end, c * kRowsPerChunk) - PI);
+  }
   auto rows = [&](int c, auto& sink) {
     Acc acc;
     const Vec<2>* x = view.x;
     const std::uint8_t* species = view.species;
     const double* sq_max = edge_sq_max_.data();
-    for (int i = c * kRowsPerChunk, end = std::min(n, (c + 1) * kRowsPerChunk); i < end; ++i) {
-      const Vec<2> xi = x[i];
-      const double wi = view.width[species[i]];
-      const double sq_i = sq_max[i];
-      for (const int* p = list_.row_begin(i), *e = list_.row_end(i); p != e; ++p) {
-        const int j = *p;
-        // Most listed pairs touch nowhere: every branch of edges_at_vertex, from either end,
-        // needs d2 within may_touch's bound for one of the four edges at i and j (the corner
-        // within dmn^2, less). The bound with the longest of them is at least each one's
-        // (each operation rounds monotonically), so a pair beyond it is skipped for sure.
-        const double d2 = (x[j] - xi).squaredNorm();
-        const double dmn = 0.5 * (wi + view.width[species[j]]);
-        if (d2 > (dmn * dmn + 0.25 * std::max(sq_i, sq_max[j])) * (1 + 1e-9)) continue;
-        edges_at_vertex<kMode>(view, i, j, d2, acc, sink);
-        edges_at_vertex<kMode>(view, j, i, d2, acc, sink);
+    // Most listed pairs touch nowhere: every branch of edges_at_vertex, from either end, needs
+    // d2 within may_touch's bound for one of the four edges at i and j (the corner within
+    // dmn^2, less). The bound with the longest of them is at least each one's (each operation
+    // rounds monotonically), so a pair beyond it is skipped for sure. The test runs over a
+    // batch of pairs without a branch (about one pair in three passes, unpredictably), keeping
+    // the passing ones in order; then those are evaluated in that order: the same sums.
+    int batch[kTestBatch];
+    double batch_d2[kTestBatch];
+    for (int k = chunk_pairs_[c], end = chunk_pairs_[c + 1]; k < end;) {
+      const int stop = std::min(end, k + kTestBatch);
+      int passed = 0;
+      for (; k < stop; ++k) {
+        const int i = PI[k], j = PJ[k];
+        const double d2 = (x[j] - x[i]).squaredNorm();
+        const double dmn = 0.5 * (view.width[species[i]] + view.width[species[j]]);
+        batch[passed] = k;
+        batch_d2[passed] = d2;
+        passed += !(d2 > (dmn * dmn + 0.25 * std::max(sq_max[i], sq_max[j])) * (1 + 1e-9));
+      }
+      for (int q = 0; q < passed; ++q) {
+        const int i = PI[batch[q]], j = PJ[batch[q]];
+        edges_at_vertex<kMode>(view, i, j, batch_d2[q], acc, sink);
+        edges_at_vertex<kMode>(view, j, i, batch_d2[q], acc, sink);
       }
     }
     chunk_acc_[c] = acc;

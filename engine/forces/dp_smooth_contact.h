@@ -58,7 +58,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// The smooth model's contact: edges of width shape.delta, with corners and friction.
   /// E_c_vertex: the energy scale of the corner (vertex-vertex) branch, E_c unless given
   /// (dp.E_c_vertex; the authors' code: E_c/2)
-  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c,
+  DpSmoothContact(NeighborList<2>& list, const PolygonSet& p, const DpShape& shape, double E_c,
                   FrictionLaw friction, std::optional<double> E_c_vertex = std::nullopt)
       : DpSmoothContact(list, p, {shape.delta[0], shape.delta[1]}, E_c, friction, true, "dp_smooth_contact") {
     eps_vertex_ = E_c_vertex.value_or(E_c);
@@ -71,7 +71,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// stretched (K_l ~ 1: seen to 3.8 l0) far enough for a vertex, of another polygon or of
   /// the edge's own, to slip between two disks, and keeps such polygons simple. Not in the
   /// paper: docs/validation.md.
-  static DpSmoothContact rough_edge_core(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
+  static DpSmoothContact rough_edge_core(NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
                                          double E_c) {
     return DpSmoothContact(list, p, core_widths(shape), kRoughCoreEnergyFraction * E_c, FrictionLaw{}, false,
                            "dp_rough_edge_core");
@@ -87,7 +87,7 @@ class DpSmoothContact final : public ForceTerm<2> {
   /// capped at the shared vertex (the fold loop in the .cpp), so an edge compressed below the
   /// width is also pushed apart. Without this term a soft polygon (K_l ~ 1, K_b ~ 1e-2) folds
   /// through itself at a vertex, where its disks two apart no longer meet. Not in the paper.
-  static DpSmoothContact rough_fold_barrier(const NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
+  static DpSmoothContact rough_fold_barrier(NeighborList<2>& list, const PolygonSet& p, const DpShape& shape,
                                             double E_c) {
     DpSmoothContact c(list, p, {kRoughFoldWidth * shape.l0[0], kRoughFoldWidth * shape.l0[1]},
                       kRoughFoldWidth * kRoughFoldWidth * E_c, FrictionLaw{}, false, "dp_rough_fold_barrier");
@@ -160,12 +160,13 @@ class DpSmoothContact final : public ForceTerm<2> {
   template <Mode kMode, class Sink>
   void edge_vertex(const View& s, int a, int b, Acc& acc, Sink& sink, FoldCap cap = FoldCap::None) const;
 
-  DpSmoothContact(const NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
+  DpSmoothContact(NeighborList<2>& list, const PolygonSet& p, std::array<double, 2> width, double E_c,
                   FrictionLaw friction, bool corners, const char* name)
       : list_(list), p_(p), width_(width), width2_{width[0] * width[0], width[1] * width[1]}, eps_(E_c), eps_vertex_(E_c),
         law_(friction), corners_(corners), folds_(corners), name_(name) {}
 
-  const NeighborList<2>& list_;
+  /// Not const: the evaluation brings the list's flat pair run up to date (update_block_lists).
+  NeighborList<2>& list_;
   const PolygonSet& p_;
   std::array<double, 2> width_;  ///< edge (and vertex) contact width per species
   std::array<double, 2> width2_; ///< its square, w * w as the fold loop computes it
@@ -185,6 +186,9 @@ class DpSmoothContact final : public ForceTerm<2> {
   mutable std::vector<double> edge_sq_;      ///< per vertex k: |r_next(k) - r_k|^2 this evaluation
   mutable std::vector<double> edge_sq_max_;  ///< per vertex: the larger of its two edges' edge_sq_
   mutable std::vector<std::vector<ForceWrite>> logs_;  ///< per chunk of rows (threads > 1)
+  mutable std::vector<int> chunk_pairs_;  ///< per chunk of rows, its first pair in the list's pair run (and the end)
+  /// Pairs tested per batch before the passing ones are evaluated (see loop()).
+  static constexpr int kTestBatch = 64;
 };
 
 }  // namespace beverloo

@@ -112,14 +112,17 @@ void DpForceField::set_threads(int threads) {
   if (rough_core_) rough_core_->set_threads(threads_);  // the rough disks and fold barrier: one thread
 }
 
-ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s, bool energies) {
+ForceReport DpForceField::shape_list_and_contact(ParticleState<2>& s, bool energies, std::optional<double> max_moved2) {
   for (auto& fi : s.f) fi.setZero();
   ForceReport r;
   r.U_shape = shape_pass(s, energies);
   // The list must reach every edge of this very step: soft segments (K_l ~ 1) stretch edges to
   // several l0, and a list that does not follow misses contacts and lets vertices through edges.
   if (edge_outgrown_) reset_edge_bounds(s);
-  list_.update(s, hopper_);
+  if (!max_moved2)
+    list_.update(s, hopper_);
+  else if (list_.due(*max_moved2))  // a reinjection since the drift reset its vertices' references: still due if measured so
+    list_.build(s, hopper_);
   if (smooth_) {
     const TermOutput o = smooth_->accumulate_with_folds(s, s.f, fold_vertices_);
     r.U_contact = o.energy;
@@ -141,8 +144,9 @@ ForceReport DpForceField::compute(ParticleState<2>& s) {
   return r;
 }
 
-ForceReport DpForceField::compute_and_kick(ParticleState<2>& s, double dt, bool& finite) {
-  ForceReport r = shape_list_and_contact(s, false);
+ForceReport DpForceField::compute_and_kick(ParticleState<2>& s, double dt, bool& finite,
+                                           std::optional<double> max_moved2) {
+  ForceReport r = shape_list_and_contact(s, false, max_moved2);
   finite = add_vertex_terms(s, r, 0.5 * dt, false);
   ForceReport out;  // the forces' by-products only: no energies, no powers
   out.max_overlap = r.max_overlap;

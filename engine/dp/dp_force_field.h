@@ -7,6 +7,7 @@
 /// generic physics tests take either.
 #include <memory>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "../config.h"
@@ -43,7 +44,12 @@ class DpForceField {
   /// report holds max_overlap and no energies or powers (as SP's fused step): their running sums
   /// are chains of dependent adds through every vertex, and a flow step needs none of them
   /// (compute() has them, for the same forces).
-  ForceReport compute_and_kick(ParticleState<2>& s, double dt, bool& finite);
+  /// max_moved2: the largest squared displacement of a vertex from the list's reference
+  /// positions, measured in the step's drift pass (DpSystem::drift_and_sync), so that the
+  /// list's rebuild test needs no sweep of its own; without it the list measures. When the list
+  /// rebuilds changes no force (the rows are sorted and hold every pair in reach either way).
+  ForceReport compute_and_kick(ParticleState<2>& s, double dt, bool& finite,
+                               std::optional<double> max_moved2 = std::nullopt);
   /// OpenMP threads for the evaluation: the shape terms by polygons, walls, gravity and drag
   /// by vertices, the smooth contact and the rough model's edge core by list rows (their force
   /// writes replayed in order); the rough disks and the fold pairs on one thread. Work
@@ -129,7 +135,7 @@ class DpForceField {
   template <class Body>
   void for_chunks(int count, Body&& body) const { for_each_chunk(threads_, count, body); }
   /// Everything before the vertex terms: the shape pass, the list, the contact.
-  ForceReport shape_list_and_contact(ParticleState<2>& s, bool energies);
+  ForceReport shape_list_and_contact(ParticleState<2>& s, bool energies, std::optional<double> max_moved2 = std::nullopt);
   /// Walls, orifice corners, gravity and drag, vertex chunk by vertex chunk; with half_dt > 0
   /// also the kick of each vertex once its force is complete (returns whether every position
   /// and velocity is finite; without the kick: true).

@@ -35,6 +35,13 @@ class DpSystem {
   FireResult minimize(const FireParams& p, double dt);
   /// bodies.x = centroids, bodies.v = mean vertex velocities.
   void sync_bodies(ParticleState<2>& bodies) const;
+  /// The step's first half on one thread, in one pass over the vertices: drift() of every
+  /// vertex (velocity_verlet.h), then sync_bodies() of the drifted vertices, each the very
+  /// operations of the two one after the other (the same bits: DpSystem tests compare them);
+  /// and the largest squared displacement from `reference` (the list's build positions; of
+  /// another size: not measured, -1 returned). The vertex arrays are larger than the cache,
+  /// and these were three sweeps over them (the list's test the third).
+  double drift_and_sync(ParticleState<2>& bodies, double dt, const VecArray<2>& reference);
   /// Polygon m becomes a regular reference polygon at `centre` moving with `velocity`.
   void reinject(int m, const Vec<2>& centre, const Vec<2>& velocity, double angle);
   /// Takes polygon m out (a draining hopper): the last polygon's vertices take its place.

@@ -1,5 +1,7 @@
 #include "dp_model.h"
 
+#include <optional>
+
 #include <algorithm>
 #include <string>
 
@@ -68,11 +70,18 @@ StepReport DpModel::step(ParticleState<2>& bodies, double dt, StepHook<2>& hook)
   static const VecArray<2> kNoReference;
   ParticleState<2>& verts = dp_.verts();
   DpForceField& forces = dp_.forces();
-  drift(verts, dt, kNoReference, forces.threads());
-  dp_.sync_bodies(bodies);  // exits are counted when the centroid crosses the orifice
+  std::optional<double> max_moved2;  // the list's displacement test, where the drift's pass took it
+  if (forces.threads() == 1) {
+    const double moved2 = dp_.drift_and_sync(bodies, dt, forces.list().reference_positions());
+    if (moved2 >= 0) max_moved2 = moved2;
+  } else {
+    drift(verts, dt, kNoReference, forces.threads());
+    dp_.sync_bodies(bodies);
+  }
+  // exits are counted when the centroid crosses the orifice
   hook.between_drift_and_force(bodies, bodies_list_, true);
   StepReport r;
-  r.forces = forces.compute_and_kick(verts, dt, r.finite);
+  r.forces = forces.compute_and_kick(verts, dt, r.finite, max_moved2);
   ++verts.step;
   bodies.step = verts.step;
   dp_.sync_bodies(bodies);

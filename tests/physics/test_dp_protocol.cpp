@@ -233,6 +233,52 @@ TEST(DpProtocol, AVertexPressedIntoAThickSideWallIsInItUntilItsDiskPassesTheCore
   dp.verts().x[i] = keep;
 }
 
+TEST(DpSystem, DriftAndSyncEqualsDriftThenSyncBodiesAndMeasuresTheLargestDisplacement) {
+  // The one-thread step's first half in one pass (drift_and_sync) against drift() and
+  // sync_bodies() one after the other: the same positions, velocities and bodies, bit for bit,
+  // and the largest squared displacement from a reference; both species, a polygon count
+  // that leaves a tail after the groups of four, forces and velocities of every sign.
+  SimConfig c = dp_config("dp_smooth", 7);
+  const Hopper<2> h = make_hopper<2>(c);
+  DpSystem a(c, h), b(c, h);
+  place_polygons(a);
+  place_polygons(b);
+  ASSERT_EQ(a.polygons().polygons() % 4, 3);
+  Rng rng(11);
+  for (DpSystem* d : {&a, &b}) {
+    Rng r(11);
+    for (int i = 0; i < d->verts().size(); ++i) {
+      d->verts().v[i] = Vec<2>(r.uniform(-1, 1), r.uniform(-1, 1));
+      d->verts().f[i] = Vec<2>(r.uniform(-50, 50), r.uniform(-50, 50));
+    }
+  }
+  ASSERT_GT(a.verts().species[0] + a.verts().species[a.verts().size() - 1] + a.verts().species[16], 0)
+      << "both species (seed 3 places them mixed)";
+  VecArray<2> reference = a.verts().x;
+  reference[37] += Vec<2>(0.01, -0.02);  // the one farthest from its reference after the drift
+  const double dt = 1e-3;
+  ParticleState<2> bodies_a, bodies_b;
+  bodies_a.resize(a.polygons().polygons());
+  bodies_b.resize(b.polygons().polygons());
+  const double moved2 = a.drift_and_sync(bodies_a, dt, reference);
+  drift(b.verts(), dt, reference);
+  b.sync_bodies(bodies_b);
+  double expected = 0;
+  for (int i = 0; i < b.verts().size(); ++i) {
+    EXPECT_EQ(a.verts().x[i], b.verts().x[i]) << "vertex " << i;
+    EXPECT_EQ(a.verts().v[i], b.verts().v[i]) << "vertex " << i;
+    expected = std::max(expected, (b.verts().x[i] - reference[i]).squaredNorm());
+  }
+  for (int m = 0; m < bodies_a.size(); ++m) {
+    EXPECT_EQ(bodies_a.x[m], bodies_b.x[m]) << "polygon " << m;
+    EXPECT_EQ(bodies_a.v[m], bodies_b.v[m]) << "polygon " << m;
+  }
+  EXPECT_EQ(moved2, expected);
+  EXPECT_GT(moved2, 4e-4) << "vertex 37's offset dominates";
+  VecArray<2> other_size(3, Vec<2>::Zero());
+  EXPECT_EQ(a.drift_and_sync(bodies_a, dt, other_size), -1.0) << "a reference of another size is not measured";
+}
+
 TEST(DpDynamics, CrushedContactsStopTheRunWithAReason) {
   SimConfig c = flowing_dp("dp_smooth", 10, 0.1);
   c.dp.E_c = 1e-3;  // far too soft to hold the polygons' weight

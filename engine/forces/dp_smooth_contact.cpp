@@ -212,7 +212,7 @@ TermOutput DpSmoothContact::loop(const ParticleState<2>& s, VecArray<2>& f, cons
     list_.update_block_lists(s.species.data());
     PI = list_.pair_i();
     PJ = list_.pair_j();
-    const int run_end = list_.pairs_begin(1);
+    const int run_end = list_.pairs_begin(list_.blocks());  // the DP list keeps one block
     if (static_cast<int>(chunk_pairs_.size()) < chunks + 1) chunk_pairs_.resize(chunks + 1);  // only when N grows
     for (int c = 0; c <= chunks; ++c)
       chunk_pairs_[c] = c == chunks ? run_end

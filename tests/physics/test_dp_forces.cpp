@@ -297,6 +297,33 @@ TEST(DpForces, SmoothContactListReachesAVertexAtTheMiddleOfARegularEdge) {
   }
 }
 
+TEST(DpForces, SmoothContactCountsEveryVertexJustInsideTheWidthAlongAnEdgeAndPastItsEnds) {
+  // edges_at_vertex skips a vertex farther than the width from an edge's line before
+  // edge_vertex: just inside the width it must still count the slab, and past the edge's ends
+  // the corners (never farther from the vertex than the line); just outside, nothing. A vertex
+  // slid along a line parallel to an edge, from before its start to beyond its end, at 0.999
+  // and 1.001 widths, against the brute-force sum over every edge and vertex.
+  SimConfig c = dp_config("dp_smooth", 2);
+  DpFixture fx(c, {Vec<2>(-4, 5), Vec<2>(4, 5)}, 0.0, 3);
+  const Hopper<2> h = make_hopper<2>(fx.c);
+  DpForceField ff(fx.c, h, fx.poly, fx.shape, fx.c.dp.E_c);
+  const int a = fx.poly.first[0], an = fx.poly.next[a];
+  const int b = fx.poly.first[1] + 5;
+  const Vec<2> e = fx.verts.x[an] - fx.verts.x[a];
+  const Vec<2> normal(e[1] / e.norm(), -e[0] / e.norm());
+  const double w = 0.5 * (fx.shape.delta[fx.verts.species[a]] + fx.shape.delta[fx.verts.species[b]]);
+  int touching = 0;
+  for (const double across : {0.999, 1.001})
+    for (double along = -0.3; along <= 1.3; along += 0.05) {
+      fx.verts.x[b] = fx.verts.x[a] + along * e + across * w * normal;
+      const ForceReport r = ff.compute(fx.verts);
+      const double expected = brute_force_smooth_energy(fx, fx.c.dp.E_c);
+      EXPECT_NEAR(r.U_contact, expected, 1e-12 + 1e-10 * expected) << "along " << along << ", " << across << " widths";
+      touching += expected > 0;
+    }
+  EXPECT_GT(touching, 20) << "the slab just inside the width touches all along the edge";
+}
+
 /// Rough edge core, independently: every edge against every vertex of another polygon or of
 /// its own polygon but the edge's ends and their other ring neighbours, slab only (0 <= t <= 1).
 double brute_force_rough_core_energy(const DpFixture& fx, double eps_c) {

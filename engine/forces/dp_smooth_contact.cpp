@@ -134,23 +134,32 @@ void DpSmoothContact::edges_at_vertex(const View& s, int a, int b, double da, Ac
   // The margin keeps rounding from ever skipping a pair that edge_vertex would count.
   const double dmn = 0.5 * (s.width[s.species[a]] + s.width[s.species[b]]);
   auto may_touch = [&](int edge_start) { return da <= (dmn * dmn + 0.25 * s.edge_sq[edge_start]) * (1 + 1e-9); };
-  // And b farther than the width from the edge's line, |(r_b - r_start) x e| > dmn |e|, is in
-  // contact with neither its slab (the slab's d is that distance) nor its start corner (the
-  // corner is on the line: at least as far). Most pairs that pass may_touch end here, before
-  // edge_vertex's division and square root (about 4 in 5 in a dense smooth pile). Squared
-  // with a margin far above the cross product's rounding (a few ulp of |q||e| < |e|), so no
-  // pair that edge_vertex would count is skipped: the same bits.
+  // What edge_vertex can count, told before its divisions and square root: b farther than
+  // the width from the edge's line, |(r_b - r_start) x e| > dmn |e|, touches neither the slab
+  // (the slab's d is that distance) nor the start corner (on the line: at least as far); b
+  // beyond the edge's end (t > 1) is the next edge's; b before its start (t < 0) only its start
+  // corner's, within dmn of it (start_d2 is the corner's own |r_b - r_start|^2, the same bits).
+  // Each test has a margin far above its rounding (a few ulp), so no pair that edge_vertex
+  // would count is skipped: the same bits. In a dense pile of soft polygons, flattened against
+  // each other, b lies near the line of several edges along a contact: two of three calls that
+  // pass the line test end at t outside the edge.
   const Vec<2> rb = s.x[b];
-  auto off_line = [&](const Vec<2>& start, const Vec<2>& end, double e2) {
+  auto may_count = [&](const Vec<2>& start, const Vec<2>& end, double e2, double start_d2) {
     const Vec<2> q = rb - start, e = end - start;
     const double cross = q[0] * e[1] - q[1] * e[0];
-    return cross * cross > dmn * dmn * e2 * (1 + 1e-9);
+    if (cross * cross > dmn * dmn * e2 * (1 + 1e-9)) return false;
+    const double qe = q[0] * e[0] + q[1] * e[1];  // t = qe / e2
+    if (qe > e2 * (1 + 1e-9)) return false;
+    return !(qe < -1e-200 * e2 && start_d2 >= dmn * dmn);
   };
   const Vec<2> ra = s.x[a];
-  if (b != s.next[an] && may_touch(a) && da <= dist2(an) && !off_line(ra, s.x[an], s.edge_sq[a]))
+  if (b != s.next[an] && may_touch(a) && da <= dist2(an) && may_count(ra, s.x[an], s.edge_sq[a], da))
     edge_vertex<kMode>(s, a, b, acc, sink);  // edge a -> next
-  if (b != s.prev[ap] && may_touch(ap) && da < dist2(ap) && !off_line(s.x[ap], ra, s.edge_sq[ap]))
-    edge_vertex<kMode>(s, ap, b, acc, sink);  // edge prev -> a
+  if (b != s.prev[ap] && may_touch(ap)) {
+    const double d_ap = dist2(ap);
+    if (da < d_ap && may_count(s.x[ap], ra, s.edge_sq[ap], d_ap))
+      edge_vertex<kMode>(s, ap, b, acc, sink);  // edge prev -> a
+  }
   if constexpr (kMode != Mode::FrictionOnly)
     if (corners_ && da < dmn * dmn && b != an && b != ap) corner_in_both_slabs(s, a, b, da, dmn, acc, sink);
 }

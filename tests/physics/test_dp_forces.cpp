@@ -298,11 +298,12 @@ TEST(DpForces, SmoothContactListReachesAVertexAtTheMiddleOfARegularEdge) {
 }
 
 TEST(DpForces, SmoothContactCountsEveryVertexJustInsideTheWidthAlongAnEdgeAndPastItsEnds) {
-  // edges_at_vertex skips a vertex farther than the width from an edge's line before
-  // edge_vertex: just inside the width it must still count the slab, and past the edge's ends
-  // the corners (never farther from the vertex than the line); just outside, nothing. A vertex
-  // slid along a line parallel to an edge, from before its start to beyond its end, at 0.999
-  // and 1.001 widths, against the brute-force sum over every edge and vertex.
+  // edges_at_vertex skips, before edge_vertex, a vertex farther than the width from an edge's
+  // line, and one whose foot lies beyond the edge's end or before its start out of the start
+  // corner's reach: inside the width it must still count the slab, and past the edge's ends
+  // the corners; just outside, nothing. A vertex slid along a line parallel to an edge, from
+  // before its start to beyond its end, at 0.5, 0.999 and 1.001 widths, against the
+  // brute-force sum over every edge and vertex.
   SimConfig c = dp_config("dp_smooth", 2);
   DpFixture fx(c, {Vec<2>(-4, 5), Vec<2>(4, 5)}, 0.0, 3);
   const Hopper<2> h = make_hopper<2>(fx.c);
@@ -313,15 +314,15 @@ TEST(DpForces, SmoothContactCountsEveryVertexJustInsideTheWidthAlongAnEdgeAndPas
   const Vec<2> normal(e[1] / e.norm(), -e[0] / e.norm());
   const double w = 0.5 * (fx.shape.delta[fx.verts.species[a]] + fx.shape.delta[fx.verts.species[b]]);
   int touching = 0;
-  for (const double across : {0.999, 1.001})
-    for (double along = -0.3; along <= 1.3; along += 0.05) {
+  for (const double across : {0.5, 0.999, 1.001})
+    for (double along = -0.3; along <= 1.3; along += 0.0125) {
       fx.verts.x[b] = fx.verts.x[a] + along * e + across * w * normal;
       const ForceReport r = ff.compute(fx.verts);
       const double expected = brute_force_smooth_energy(fx, fx.c.dp.E_c);
       EXPECT_NEAR(r.U_contact, expected, 1e-12 + 1e-10 * expected) << "along " << along << ", " << across << " widths";
       touching += expected > 0;
     }
-  EXPECT_GT(touching, 20) << "the slab just inside the width touches all along the edge";
+  EXPECT_GT(touching, 160) << "the slab inside the width touches all along the edge, and the corners past its ends";
 }
 
 /// Rough edge core, independently: every edge against every vertex of another polygon or of

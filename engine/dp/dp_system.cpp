@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "../integrate/velocity_verlet.h"
 #include "../protocol/exit_counter.h"
 #include "../units.h"
 
@@ -70,70 +71,13 @@ FireResult DpSystem::minimize(const FireParams& p, double dt) {
   return fire_minimize(verts_, soft, p, dt);
 }
 
-void DpSystem::sync_bodies(ParticleState<2>& bodies) const {
+template <class Vertex>
+void DpSystem::sum_polygons(ParticleState<2>& bodies, Vertex&& vertex) const {
   // Each centroid is a sum in vertex order (its bits are what exits, reinjection and the
   // observables see); a sum is a chain of dependent adds, so four polygons go side by side
   // (eight independent chains), each still summed in its own order. Polygons are uniform.
-  const double inv_nv = 1.0 / c_.dp.n_v;
+  const __m128d inv_nv = _mm_set1_pd(1.0 / c_.dp.n_v);
   const int np = poly_.polygons(), n = c_.dp.n_v;
-  const Vec<2>* X = verts_.x.data();
-  const Vec<2>* V = verts_.v.data();
-  int m = 0;
-  for (; m + 4 <= np; m += 4) {
-    Vec<2> x[4], v[4];
-    for (int j = 0; j < 4; ++j) x[j] = v[j] = Vec<2>::Zero();
-    const int f = poly_.first[m];
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < 4; ++j) {
-        x[j] += X[f + j * n + k];
-        v[j] += V[f + j * n + k];
-      }
-    for (int j = 0; j < 4; ++j) {
-      bodies.x[m + j] = x[j] * inv_nv;
-      bodies.v[m + j] = v[j] * inv_nv;
-    }
-  }
-  for (; m < np; ++m) {
-    Vec<2> x = Vec<2>::Zero(), v = Vec<2>::Zero();
-    for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) {
-      x += X[i];
-      v += V[i];
-    }
-    bodies.x[m] = x * inv_nv;
-    bodies.v[m] = v * inv_nv;
-  }
-}
-
-double DpSystem::drift_and_sync(ParticleState<2>& bodies, double dt, const VecArray<2>& reference) {
-  const double half_dt = 0.5 * dt, half_dt2 = 0.5 * dt * dt;
-  const __m128d vdt = _mm_set1_pd(dt), vh = _mm_set1_pd(half_dt), vh2 = _mm_set1_pd(half_dt2);
-  double* __restrict X = verts_.x.data()->data();
-  double* __restrict V = verts_.v.data()->data();
-  const double* __restrict F = verts_.f.data()->data();
-  const double* __restrict inv_m = verts_.inv_mass.data();
-  const bool measure = reference.size() == verts_.x.size();
-  const double* __restrict R = measure ? reference.data()->data() : nullptr;
-  __m128d moved2 = _mm_setzero_pd();  // the largest squared displacement, in the low lane
-  // drift()'s operations on vertex i; its squared displacement (u_x^2 + u_y^2) into moved2
-  auto drift_one = [&](int i, __m128d& x_out, __m128d& v_out) __attribute__((always_inline)) {
-    const __m128d a = _mm_mul_pd(_mm_loadu_pd(F + 2 * i), _mm_set1_pd(inv_m[i]));
-    const __m128d v = _mm_loadu_pd(V + 2 * i);
-    const __m128d x = _mm_add_pd(_mm_loadu_pd(X + 2 * i), _mm_add_pd(_mm_mul_pd(vdt, v), _mm_mul_pd(vh2, a)));
-    const __m128d v_new = _mm_add_pd(v, _mm_mul_pd(vh, a));
-    _mm_storeu_pd(X + 2 * i, x);
-    _mm_storeu_pd(V + 2 * i, v_new);
-    if (measure) {
-      const __m128d u = _mm_sub_pd(x, _mm_loadu_pd(R + 2 * i));
-      const __m128d u2 = _mm_mul_pd(u, u);
-      moved2 = _mm_max_sd(moved2, _mm_add_sd(u2, _mm_unpackhi_pd(u2, u2)));
-    }
-    x_out = x;
-    v_out = v_new;
-  };
-  // sync_bodies()'s sums: four polygons side by side, each summed in its vertex order
-  const double inv_nv = 1.0 / c_.dp.n_v;
-  const int np = poly_.polygons(), n = c_.dp.n_v;
-  const __m128d vinv = _mm_set1_pd(inv_nv);
   int m = 0;
   for (; m + 4 <= np; m += 4) {
     __m128d x[4], v[4];
@@ -142,26 +86,54 @@ double DpSystem::drift_and_sync(ParticleState<2>& bodies, double dt, const VecAr
     for (int k = 0; k < n; ++k)
       for (int j = 0; j < 4; ++j) {
         __m128d xi, vi;
-        drift_one(f + j * n + k, xi, vi);
+        vertex(f + j * n + k, xi, vi);
         x[j] = _mm_add_pd(x[j], xi);
         v[j] = _mm_add_pd(v[j], vi);
       }
     for (int j = 0; j < 4; ++j) {
-      _mm_storeu_pd(bodies.x[m + j].data(), _mm_mul_pd(x[j], vinv));
-      _mm_storeu_pd(bodies.v[m + j].data(), _mm_mul_pd(v[j], vinv));
+      _mm_storeu_pd(bodies.x[m + j].data(), _mm_mul_pd(x[j], inv_nv));
+      _mm_storeu_pd(bodies.v[m + j].data(), _mm_mul_pd(v[j], inv_nv));
     }
   }
   for (; m < np; ++m) {
     __m128d x = _mm_setzero_pd(), v = _mm_setzero_pd();
     for (int i = poly_.first[m]; i < poly_.first[m + 1]; ++i) {
       __m128d xi, vi;
-      drift_one(i, xi, vi);
+      vertex(i, xi, vi);
       x = _mm_add_pd(x, xi);
       v = _mm_add_pd(v, vi);
     }
-    _mm_storeu_pd(bodies.x[m].data(), _mm_mul_pd(x, vinv));
-    _mm_storeu_pd(bodies.v[m].data(), _mm_mul_pd(v, vinv));
+    _mm_storeu_pd(bodies.x[m].data(), _mm_mul_pd(x, inv_nv));
+    _mm_storeu_pd(bodies.v[m].data(), _mm_mul_pd(v, inv_nv));
   }
+}
+
+void DpSystem::sync_bodies(ParticleState<2>& bodies) const {
+  const double* X = verts_.x.data()->data();
+  const double* V = verts_.v.data()->data();
+  sum_polygons(bodies, [&](int i, __m128d& x, __m128d& v) __attribute__((always_inline)) {
+    x = _mm_loadu_pd(X + 2 * i);
+    v = _mm_loadu_pd(V + 2 * i);
+  });
+}
+
+double DpSystem::drift_and_sync(ParticleState<2>& bodies, double dt, const VecArray<2>& reference) {
+  const __m128d vdt = _mm_set1_pd(dt), vh = _mm_set1_pd(0.5 * dt), vh2 = _mm_set1_pd(0.5 * dt * dt);
+  double* __restrict X = verts_.x.data()->data();
+  double* __restrict V = verts_.v.data()->data();
+  const double* __restrict F = verts_.f.data()->data();
+  const double* __restrict inv_m = verts_.inv_mass.data();
+  const bool measure = reference.size() == verts_.x.size();
+  const double* __restrict R = measure ? reference.data()->data() : nullptr;
+  __m128d moved2 = _mm_setzero_pd();  // the largest squared displacement, in the low lane
+  sum_polygons(bodies, [&](int i, __m128d& x, __m128d& v) __attribute__((always_inline)) {
+    drift_item_2d(i, X, V, F, inv_m, vdt, vh, vh2, x, v);
+    if (measure) {  // (u_x^2 + u_y^2), as squaredNorm()
+      const __m128d u = _mm_sub_pd(x, _mm_loadu_pd(R + 2 * i));
+      const __m128d u2 = _mm_mul_pd(u, u);
+      moved2 = _mm_max_sd(moved2, _mm_add_sd(u2, _mm_unpackhi_pd(u2, u2)));
+    }
+  });
   return measure ? _mm_cvtsd_f64(moved2) : -1.0;
 }
 

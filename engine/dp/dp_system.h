@@ -69,6 +69,11 @@ class DpSystem {
   static constexpr double kMaxEdgeStretch = 8.0;
 
  private:
+  /// bodies.x, bodies.v: each polygon's vertex sums over n_v, four polygons side by side (eight
+  /// independent chains), each summed in its vertex order. vertex(i, x, v) gives vertex i's
+  /// position and velocity (sync_bodies: as stored; drift_and_sync: drifted first).
+  template <class Vertex>
+  void sum_polygons(ParticleState<2>& bodies, Vertex&& vertex) const;
   SimConfig c_;
   const Hopper<2>& hopper_;
   DpShape shape_;

@@ -21,6 +21,21 @@ struct StepReport {
 /// forces are evaluated: where the protocol counts exits and reinjects particles, so that the
 /// forces of the step always belong to the final positions.
 /// FF is ForceField<D> or DpForceField (anything with ForceReport compute(ParticleState<D>&)).
+/// drift()'s operations on 2D item i, both components in one SSE2 register (each lane the
+/// scalar operations: the same bits); returns the new position and velocity. Shared by drift()
+/// and the DP step's one-pass drift (DpSystem::drift_and_sync).
+[[gnu::always_inline]] inline void drift_item_2d(int i, double* __restrict X, double* __restrict V,
+                                                 const double* __restrict F, const double* __restrict inv_m,
+                                                 __m128d dt, __m128d half_dt, __m128d half_dt2, __m128d& x_out,
+                                                 __m128d& v_out) {
+  const __m128d a = _mm_mul_pd(_mm_loadu_pd(F + 2 * i), _mm_set1_pd(inv_m[i]));
+  const __m128d v = _mm_loadu_pd(V + 2 * i);
+  x_out = _mm_add_pd(_mm_loadu_pd(X + 2 * i), _mm_add_pd(_mm_mul_pd(dt, v), _mm_mul_pd(half_dt2, a)));
+  v_out = _mm_add_pd(v, _mm_mul_pd(half_dt, a));
+  _mm_storeu_pd(X + 2 * i, x_out);
+  _mm_storeu_pd(V + 2 * i, v_out);
+}
+
 /// The first half of a step: x += v dt + a dt^2/2, v += a dt/2 (a = f / m). Returns the largest
 /// squared displacement from `reference` (a Verlet list's build positions; empty: 0), taken in
 /// the same pass so that the list's rebuild test costs no second sweep over the positions.
@@ -57,15 +72,10 @@ double drift(ParticleState<D>& s, double dt, const VecArray<D>& reference, int t
   if (threads == 1 && !measure) {
     // the same operations as one() without the measure, in a loop of its own: through the
     // lambda's captured references GCC kept every item scalar and reloaded dt from the stack
-    // (the DP step's drift took a tenth of it)
-    if constexpr (D == 2) {  // both components in one SSE2 register: each lane the scalar operations
+    if constexpr (D == 2) {
       const __m128d vdt = _mm_set1_pd(dt), vh = _mm_set1_pd(half_dt), vh2 = _mm_set1_pd(half_dt2);
-      for (int i = 0; i < n; ++i) {
-        const __m128d a = _mm_mul_pd(_mm_loadu_pd(F + 2 * i), _mm_set1_pd(inv_m[i]));
-        const __m128d v = _mm_loadu_pd(V + 2 * i);
-        _mm_storeu_pd(X + 2 * i, _mm_add_pd(_mm_loadu_pd(X + 2 * i), _mm_add_pd(_mm_mul_pd(vdt, v), _mm_mul_pd(vh2, a))));
-        _mm_storeu_pd(V + 2 * i, _mm_add_pd(v, _mm_mul_pd(vh, a)));
-      }
+      __m128d x, v;
+      for (int i = 0; i < n; ++i) drift_item_2d(i, X, V, F, inv_m, vdt, vh, vh2, x, v);
       return 0;
     }
     for (int i = 0; i < n; ++i) {

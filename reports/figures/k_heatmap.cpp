@@ -1,5 +1,8 @@
 // A heat map of the offset k over (K_l, K_b), one panel per DP group (model, E_c, lambda, N,
-// wall angles); at most four panels (all fits are in the tables).
+// wall angles); at most four panels (all fits are in the tables). A group in a dissipation
+// limit (friction only or drag only) also gets the panel of k with beta held at d - 1/2 or
+// d - 3/2, the way the paper fits k (series_fits.cpp): with four to seven widths per cell the
+// free fit often cannot tell k from beta, and the paper's Fig. 7 is a map of the held form.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -18,27 +21,45 @@ ReportFigure k_heatmap_Kl_Kb(const FigureContext& c) {
       by[s.model + " E_c=" + num(s.E_c) + " lambda=" + format_lambda(s.lambda) + " N=" + std::to_string(s.N) +
          (s.theta_left != 90 || s.theta_right != 90 ? " theta=" + num(s.theta_left) + "/" + num(s.theta_right) : "")]
           .push_back(&s);
-  std::vector<std::pair<std::string, std::vector<const Series*>>> panels;
+  // a panel: its title and its cells (K_l, K_b, the fit drawn)
+  struct Panel {
+    std::string title;
+    std::vector<std::pair<const Series*, const BeverlooFit*>> cells;
+  };
+  std::vector<Panel> panels;
   double k_lo = INFINITY, k_hi = -INFINITY;
-  for (auto& [label, list] : by) {
+  auto add_panel = [&](Panel p) {
     std::set<std::pair<double, double>> grid;
-    for (const Series* s : list) grid.insert({s->K_l, s->K_b});
-    if (grid.size() < 2 || panels.size() == 4) continue;
-    for (const Series* s : list) k_lo = std::min(k_lo, s->fit->k), k_hi = std::max(k_hi, s->fit->k);
-    panels.emplace_back(label, list);
+    for (const auto& [s, fit] : p.cells) grid.insert({s->K_l, s->K_b});
+    if (grid.size() < 2 || panels.size() == 4) return;
+    for (const auto& [s, fit] : p.cells) k_lo = std::min(k_lo, fit->k), k_hi = std::max(k_hi, fit->k);
+    panels.push_back(std::move(p));
+  };
+  for (auto& [label, list] : by) {
+    Panel free_fit{label, {}};
+    for (const Series* s : list) free_fit.cells.emplace_back(s, &*s->fit);
+    add_panel(std::move(free_fit));
+    const double lambda = list.front()->lambda;
+    if (lambda != 0 && !std::isinf(lambda)) continue;
+    const bool friction = lambda == 0;
+    const int dimension = list.front()->dimension;
+    Panel held{label + ", beta held at " + num(friction ? dimension - 0.5 : dimension - 1.5) + " (the paper's way)", {}};
+    for (const Series* s : list)
+      if (const auto& fit = friction ? s->authors_fixed_hi : s->authors_fixed_lo) held.cells.emplace_back(s, &*fit);
+    add_panel(std::move(held));
   }
   if (!panels.empty()) {
     std::ostringstream body;
     body << "set logscale xy\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\n"
          << "set palette defined (0 '#440154', 1 '#3B528B', 2 '#21908C', 3 '#5DC963', 4 '#FDE725')\n"  // viridis
          << "set cblabel 'k / sigma_avg'\nset cbrange [" << num(k_lo) << ":" << num(k_hi > k_lo ? k_hi : k_lo + 1) << "]\n"
-         << "set multiplot layout 1," << panels.size() << "\n";
-    for (const auto& [label, list] : panels) {
-      const int block = f.begin_block(label + ": K_l K_b k k_err");
-      for (const Series* s : list)
-        f.data << num(s->K_l) << " " << num(s->K_b) << " " << num(s->fit->k) << " " << num(s->fit->k_err) << "\n";
+         << "set multiplot layout " << (panels.size() > 2 ? 2 : 1) << "," << (panels.size() > 2 ? 2 : panels.size()) << "\n";
+    for (const Panel& p : panels) {
+      const int block = f.begin_block(p.title + ": K_l K_b k k_err");
+      for (const auto& [s, fit] : p.cells)
+        f.data << num(s->K_l) << " " << num(s->K_b) << " " << num(fit->k) << " " << num(fit->k_err) << "\n";
       // each panel's group is its own title (the figure's title is the page's caption)
-      body << "set title " << gnuplot_string(label) << " noenhanced font ',9'\n"
+      body << "set title " << gnuplot_string(p.title) << " noenhanced font ',9'\n"
            << "plot DATA index " << block << " using 1:2:3 with points pt 5 ps 5 palette notitle, \\\n"
            << "     DATA index " << block
            << " using 1:2:(sprintf('%.2f+-%.2f', $3, $4)) with labels offset 0,2 font ',8' notitle\n";

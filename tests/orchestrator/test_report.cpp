@@ -53,7 +53,9 @@ fs::path make_fixture(const double lambda_c, const double b) {
     const double k = j["model"] == "sp" ? (j["E_sp"].get<double>() > 500 ? 2.0 : 1.0)
                                         : 1.5 + 0.5 * std::log10(j["dp"]["K_b"].get<double>()) +
                                               0.2 * std::log10(j["dp"]["K_l"].get<double>());
-    const double C = 0.4;
+    // DP flows above the authors' flow threshold (1 % of their unit, 3.16), so that their
+    // held-beta fit of k (the heat map's paper-form panel) sees every width
+    const double C = j["model"] == "sp" ? 0.4 : 4.0;
     const double Q = beverloo_model(w, C, k, beta);
     const bool clogs = w < 3.5 && j.value("seed", 0) % 2 == 1;
     const json summary = {{"status", clogs ? "clogged" : "converged"}, {"Q", clogs ? 0.0 : Q}, {"Q_err", clogs ? 0.0 : 0.02 * Q},
@@ -161,6 +163,12 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM beverloo_fits WHERE model = 'sp' AND (E_sp IS NULL OR K_l IS NOT NULL)"), 0);
   const std::string heatmap = read(out / "k_heatmap_Kl_Kb.dat");
   EXPECT_NE(heatmap.find("10 10 2.2"), std::string::npos) << heatmap;
+  // the drag-only group also as the paper fits k (beta held at 1/2), in its own block: the
+  // fixture's Q is exact, so the held fit finds the same k at every cell
+  const std::size_t held = heatmap.find("beta held at 0.5 (the paper's way)");
+  ASSERT_NE(held, std::string::npos) << heatmap;
+  for (const char* cell : {"\n1 0.1 1 ", "\n10 0.1 1.2 ", "\n1 10 2 ", "\n10 10 2.2 "})
+    EXPECT_NE(heatmap.find(cell, held), std::string::npos) << cell << " in the held block of\n" << heatmap;
   db::Statement short_series = db.prepare("SELECT message FROM beverloo_fits WHERE E_sp = 50");
   ASSERT_TRUE(short_series.step());
   EXPECT_NE(short_series.get_text(0).find("need at least 4"), std::string::npos);

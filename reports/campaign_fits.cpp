@@ -111,6 +111,11 @@ void store_authors_fit(db::Statement& au, const Series& s) {
     else
       au.bind_null(col).bind_null(col + 1).bind_null(col + 2);
   }
+  int col = 19;
+  for (double spread : {s.k_replica_spread, s.k_at_beta_lo_replica_spread, s.k_at_beta_hi_replica_spread}) {
+    if (std::isnan(spread)) au.bind_null(col); else au.bind(col, spread);
+    ++col;
+  }
   au.run();
 }
 }  // namespace
@@ -136,7 +141,8 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       "UPDATE beverloo_fit_results SET authors_C = ?2, authors_C_err = ?3, authors_k = ?4, authors_k_err = ?5, "
       "authors_beta = ?6, authors_beta_err = ?7, authors_points = ?8, authors_at_bound = ?9, authors_message = ?10, "
       "replica_fits = ?11, beta_replica_spread = ?12, authors_k_at_beta_lo = ?13, authors_k_at_beta_lo_err = ?14, "
-      "authors_C_at_beta_lo = ?15, authors_k_at_beta_hi = ?16, authors_k_at_beta_hi_err = ?17, authors_C_at_beta_hi = ?18 "
+      "authors_C_at_beta_lo = ?15, authors_k_at_beta_hi = ?16, authors_k_at_beta_hi_err = ?17, authors_C_at_beta_hi = ?18, "
+      "k_replica_spread = ?19, authors_k_at_beta_lo_replica_spread = ?20, authors_k_at_beta_hi_replica_spread = ?21 "
       "WHERE series_key = ?1");
   for (const Series& s : fits.series) {
     int flowing = 0;
@@ -270,7 +276,8 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   std::ostringstream bcsv, bmd, fcsv, fmd;
   bcsv << "label,lambda,beta,beta_err,replica_fits,beta_replica_spread,k,k_err,C,C_err,authors_points,authors_beta,authors_beta_err,authors_k,authors_k_err,"
           "authors_C,authors_C_err,authors_at_bound,authors_message,authors_k_at_beta_lo,authors_k_at_beta_lo_err,"
-          "authors_k_at_beta_hi,authors_k_at_beta_hi_err\n";
+          "authors_k_at_beta_hi,authors_k_at_beta_hi_err,k_replica_spread,authors_k_at_beta_lo_replica_spread,"
+          "authors_k_at_beta_hi_replica_spread\n";
   bmd << "| series | beta (free) | spread of beta over replicas | beta (authors' way) | k (free) | k (authors' way) | at a "
          "bound | k at beta = d - 3/2; d - 1/2 (authors' way) |\n|---|---|---|---|---|---|---|---|\n";
   for (const Series& s : fits.series) {
@@ -291,18 +298,28 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     }
     for (const auto* fixed : {&s.authors_fixed_lo, &s.authors_fixed_hi})
       bcsv << ',' << (*fixed ? fmt((*fixed)->k, 8) : "") << ',' << (*fixed ? fmt((*fixed)->k_err, 4) : "");
+    for (double spread : {s.k_replica_spread, s.k_at_beta_lo_replica_spread, s.k_at_beta_hi_replica_spread})
+      bcsv << ',' << (std::isnan(spread) ? std::string() : fmt(spread, 4));
     bcsv << "\n";
     auto pm = [](double v, double e) { return fmt(v) + " ± " + fmt(e, 2); };
+    // a k with its spread over replicas where there is one
+    auto pm_spread = [&pm](double v, double e, double spread) {
+      return pm(v, e) + (std::isnan(spread) ? std::string() : " (spread " + fmt(spread, 2) + ")");
+    };
     const std::string spread = std::isnan(s.beta_replica_spread)
                                    ? std::string("-")
                                    : fmt(s.beta_replica_spread, 2) + " (" + std::to_string(s.replica_fits) + " replicas)";
     bmd << "| " << markdown_cell(s.label) << " | " << (s.fit ? pm(s.fit->beta, s.fit->beta_err) : "no fit") << " | " << spread
         << " | " << (s.authors_fit ? pm(s.authors_fit->fit.beta, s.authors_fit->fit.beta_err) : "no fit") << " | "
-        << (s.fit ? pm(s.fit->k, s.fit->k_err) : "") << " | "
+        << (s.fit ? pm_spread(s.fit->k, s.fit->k_err, s.k_replica_spread) : "") << " | "
         << (s.authors_fit ? pm(s.authors_fit->fit.k, s.authors_fit->fit.k_err) : "") << " | "
         << (s.authors_fit ? bound_names(*s.authors_fit) : markdown_cell(s.authors_message)) << " | "
-        << (s.authors_fixed_lo ? pm(s.authors_fixed_lo->k, s.authors_fixed_lo->k_err) : "-") << "; "
-        << (s.authors_fixed_hi ? pm(s.authors_fixed_hi->k, s.authors_fixed_hi->k_err) : "-") << " |\n";
+        << (s.authors_fixed_lo ? pm_spread(s.authors_fixed_lo->k, s.authors_fixed_lo->k_err, s.k_at_beta_lo_replica_spread)
+                               : "-")
+        << "; "
+        << (s.authors_fixed_hi ? pm_spread(s.authors_fixed_hi->k, s.authors_fixed_hi->k_err, s.k_at_beta_hi_replica_spread)
+                               : "-")
+        << " |\n";
   }
   fcsv << "label,points,lambda_c,lambda_c_err,b,b_err,chi2_red,free_lambda_c,free_lambda_c_err,free_b,free_b_err,"
           "free_beta_lambda0,free_beta_lambda0_err,free_beta_inf,free_beta_inf_err,free_chi2_red,free_message\n";

@@ -61,9 +61,12 @@ struct Series {
   /// their Fig. 2 and Appendix B): k and C of each.
   std::optional<BeverlooFit> authors_fixed_lo, authors_fixed_hi;
   /// Replicas fitted one by one (those with every width of the pooled fit), and the sample
-  /// standard deviation of their betas (NaN below two): the run-to-run spread.
+  /// standard deviation of their betas (NaN below two): the run-to-run spread. The same for k
+  /// of the free fit and of the authors' fits with beta held (the offset is what the paper's
+  /// Fig. 7 maps; its spread over seeds is what a difference between two cells is judged by).
   int replica_fits = 0;
-  double beta_replica_spread = NAN;
+  double beta_replica_spread = NAN, k_replica_spread = NAN;
+  double k_at_beta_lo_replica_spread = NAN, k_at_beta_hi_replica_spread = NAN;
   /// Clogging as a result: per w, the time to a clog over the replicas (Kaplan-Meier, runs that
   /// ended flowing censored at their end); every w of a series in which some run clogged.
   struct ClogPoint {

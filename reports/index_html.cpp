@@ -127,8 +127,8 @@ void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
   if (!any) return;
   html << "<h2>Every exponent two ways</h2>\n<p>beverloo's free fit (above) beside the fit the paper's authors made: "
           "unweighted, beta bounded to [0.4, 1.58], k to [0.5, 5], over 2 &lt; w &lt; 19 (a parameter on a bound is "
-          "named), and with beta held at d - 3/2 and d - 1/2 as their Fig. 2 fits; and the spread of beta over the "
-          "replicas, each fitted alone. The paper's published beta(lambda) is the bounded fit rescaled so that its three "
+          "named), and with beta held at d - 3/2 and d - 1/2 as their Fig. 2 fits; and the spread of beta (and of the "
+          "held fits' k) over the replicas, each fitted alone. The paper's published beta(lambda) is the bounded fit rescaled so that its three "
           "lowest-lambda points average 1.5; this report never rescales.</p>\n"
        << "<table><tr><th>series</th><th>beta (free)</th><th>spread over replicas</th><th>beta (authors' way)</th>"
        << "<th>on a bound</th><th>k at beta = d - 3/2</th><th>k at beta = d - 1/2</th></tr>\n";
@@ -143,8 +143,12 @@ void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
            << html_escape(bound_names(*s.authors_fit)) << "</td>";
     else
       html << "<td colspan=2>" << html_escape(s.authors_message) << "</td>";
-    for (const auto* fixed : {&s.authors_fixed_lo, &s.authors_fixed_hi})
-      html << "<td>" << (*fixed ? pm((*fixed)->k, (*fixed)->k_err) : std::string("-")) << "</td>";
+    for (const auto& [fixed, spread] : {std::pair{&s.authors_fixed_lo, s.k_at_beta_lo_replica_spread},
+                                        std::pair{&s.authors_fixed_hi, s.k_at_beta_hi_replica_spread}})
+      html << "<td>"
+           << (*fixed ? pm((*fixed)->k, (*fixed)->k_err) + (std::isnan(spread) ? "" : ", spread " + format_value(spread, 2))
+                      : std::string("-"))
+           << "</td>";
     html << "</tr>\n";
   }
   html << "</table>\n<p><a href=\"beverloo_fits_both_ways.csv\">CSV</a> &middot; "

@@ -1,7 +1,9 @@
 #include "paper_claims.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "core/text_escape.h"
@@ -219,6 +221,59 @@ void experiment_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   }
 }
 
+/// Fig. 7c (frictionless DP, drag only, 2D, theta_w = 90): k as the paper fits it (beta held
+/// at 1/2) at the corners of a campaign's (K_l, K_b) grid, where the grid spans the paper's axes
+/// (four decades of K_b, three of K_l; the labels' values depend on the parameter set, the spans
+/// do not): "at small K_l, k increases from ~1 to ~3.5 as K_b increases from 1e-2 to above 1e2",
+/// "at small K_b, k increases from ~1 to 2 as K_l increases from 1 to 1e3". Sigma is the larger
+/// of the held fit's error and its spread over replicas.
+void heatmap_k_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  std::map<std::string, std::vector<const Series*>> groups;  // all but K_l and K_b equal
+  for (const Series& s : fits.series)
+    if (s.model == "dp_smooth" && s.dimension == 2 && simulated_flow(s) && std::isinf(s.lambda) && s.authors_fixed_lo)
+      groups["N=" + std::to_string(s.N) + " n_v=" + std::to_string(s.n_v) + " E_c=" + format_value(s.E_c, 6) +
+             " K_a=" + format_value(s.K_a, 6) + " drag=" + format_value(s.zeta, 6) + "/" + format_value(s.drag_rate, 6)]
+          .push_back(&s);
+  for (const auto& [group, list] : groups) {
+    double kl_lo = INFINITY, kl_hi = -INFINITY, kb_lo = INFINITY, kb_hi = -INFINITY;
+    for (const Series* s : list) {
+      kl_lo = std::min(kl_lo, s->K_l), kl_hi = std::max(kl_hi, s->K_l);
+      kb_lo = std::min(kb_lo, s->K_b), kb_hi = std::max(kb_hi, s->K_b);
+    }
+    auto at = [&list](double K_l, double K_b) -> const Series* {
+      for (const Series* s : list)
+        if (s->K_l == K_l && s->K_b == K_b) return s;
+      return nullptr;
+    };
+    auto check = [&out](const Series* s, const std::string& claim, const std::string& paper, double value) {
+      if (!s) return;
+      const BeverlooFit& fit = *s->authors_fixed_lo;
+      ClaimCheck c;
+      c.claim = claim;
+      c.subject = s->label;
+      c.paper = paper;
+      c.measured = fit.k;
+      const double spread = s->k_at_beta_lo_replica_spread;
+      c.sigma = std::isnan(spread) ? fit.k_err : std::max(fit.k_err, spread);
+      c.measured_text = format_with_error(fit.k, fit.k_err, " +- ") + " (beta held at 1/2)";
+      if (!std::isnan(spread))
+        c.measured_text += ", spread " + format_value(spread, 2) + " over " + std::to_string(s->replica_fits) + " replicas";
+      judge(c, value);
+      out.push_back(c);
+    };
+    const bool kb_span = kb_hi >= 0.99e4 * kb_lo, kl_span = kl_hi >= 0.99e3 * kl_lo;
+    if (kb_span || kl_span)
+      check(at(kl_lo, kb_lo), "Fig. 7c, drag only: k ~ 1 at the grid's smallest K_l and K_b (the paper's corner K_l = 1, K_b = 1e-2)",
+            "~1", 1.0);
+    if (kb_span)
+      check(at(kl_lo, kb_hi), "Fig. 7c, drag only: at small K_l k rises to ~3.5 as K_b grows four decades (to 1e2)",
+            "~3.5", 3.5);
+    if (kl_span)
+      check(at(kl_hi, kb_lo), "Fig. 7c, drag only: at small K_b k rises only to ~2 as K_l grows three decades (to 1e3)",
+            "~2", 2.0);
+  }
+}
+
 }  // namespace
 
 std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
@@ -230,6 +285,7 @@ std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
     limit_independence(fits, false, d, out);
   }
   crossover_checks(fits, out);
+  heatmap_k_checks(fits, out);
   experiment_checks(fits, out);
   return out;
 }

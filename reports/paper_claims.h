@@ -4,8 +4,9 @@
 /// has every claim; this is the part a report can check by itself): the exponents in both
 /// dissipation limits (d - 1/2 with friction only, d - 3/2 with drag only, for SP and DP), that
 /// the exponent of a limit does not depend on the model or its stiffness, nor on N >= 800, lambda_c and the
-/// stretching exponent of beta(lambda), the ratio of the prefactors C of the two limits, and
-/// the experiments' beta and k. Each check names the series or group it read, the paper's value,
+/// stretching exponent of beta(lambda), the ratio of the prefactors C of the two limits, the
+/// corners of Fig. 7c's k map (drag-only smooth DP, k with beta held), and the experiments'
+/// beta and k. Each check names the series or group it read, the paper's value,
 /// the measured one with its error (and the replicas' spread where there is one), and a verdict
 /// by one stated rule. The paper's values carry no errors ("~" in its text), so the rule uses the
 /// measurement's: agree when |measured - paper| <= 2 sigma, sigma the larger of the fit's error

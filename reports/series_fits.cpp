@@ -36,15 +36,25 @@ void pool_points(Series& s, const std::vector<RunRecord>& runs) {
   }
 }
 
+/// The sample standard deviation (NaN below two values).
+double sample_sd(const std::vector<double>& v) {
+  if (v.size() < 2) return NAN;
+  double mean = 0, ss = 0;
+  for (double x : v) mean += x / v.size();
+  for (double x : v) ss += (x - mean) * (x - mean);
+  return std::sqrt(ss / (v.size() - 1));
+}
+
 /// The run-to-run spread: each replica (seed) fitted alone where it has every width the pooled
-/// fit used; the sample standard deviation of their betas, beside the fit's own error (the
-/// pooled fit's error says how well one set of points fixes beta, not how far another seed's
-/// set would move it).
+/// fit used; the sample standard deviation of their betas and ks, beside the fit's own error
+/// (the pooled fit's error says how well one set of points fixes beta, not how far another
+/// seed's set would move it). Likewise k of the authors' fits with beta held, over the replicas
+/// where that fit exists.
 void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t widths) {
   std::map<int, std::map<double, const RunRecord*>> by_replica;
   for (const RunRecord& r : runs)
     if (!r.clogged && r.Q > 0 && r.Q_err > 0) by_replica[r.replica][r.w] = &r;
-  std::vector<double> betas;
+  std::vector<double> betas, ks, ks_lo, ks_hi;
   for (const auto& [replica, pts] : by_replica) {
     if (pts.size() != widths) continue;
     std::vector<double> rw, rq, re;
@@ -54,17 +64,24 @@ void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t w
       re.push_back(r->Q_err);
     }
     try {
-      betas.push_back(fit_beverloo(rw, rq, re).beta);
+      const BeverlooFit f = fit_beverloo(rw, rq, re);
+      betas.push_back(f.beta);
+      ks.push_back(f.k);
     } catch (const FitError&) {
+    }
+    if (s.rate_is_c0()) continue;  // no authors' fits of a drain's c0 t0
+    for (auto [beta, out] : {std::pair{s.dimension - 1.5, &ks_lo}, std::pair{s.dimension - 0.5, &ks_hi}}) {
+      try {
+        out->push_back(fit_beverloo_fixed_beta(rw, rq, beta, BoundedFitOptions::authors()).k);
+      } catch (const FitError&) {
+      }
     }
   }
   s.replica_fits = static_cast<int>(betas.size());
-  if (betas.size() >= 2) {
-    double mean = 0, ss = 0;
-    for (double b : betas) mean += b / betas.size();
-    for (double b : betas) ss += (b - mean) * (b - mean);
-    s.beta_replica_spread = std::sqrt(ss / (betas.size() - 1));
-  }
+  s.beta_replica_spread = sample_sd(betas);
+  s.k_replica_spread = sample_sd(ks);
+  s.k_at_beta_lo_replica_spread = sample_sd(ks_lo);
+  s.k_at_beta_hi_replica_spread = sample_sd(ks_hi);
 }
 
 /// Per w, Kaplan-Meier over the replicas, for every w of a series in which some run clogged.

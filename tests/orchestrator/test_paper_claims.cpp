@@ -191,6 +191,57 @@ TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
   EXPECT_TRUE(checks[1].agrees);
 }
 
+/// A drag-only smooth DP cell of Fig. 7c with k from the held fit (beta = 1/2).
+Series dp_cell(double K_l, double K_b, double k_held, double k_err, double spread = NAN) {
+  Series s = series("DP K_l=" + std::to_string(K_l) + " K_b=" + std::to_string(K_b), 2, INFINITY, 0.5, 0.05);
+  s.model = "dp_smooth";
+  s.n_v = 16, s.K_a = 3055.8, s.E_c = 231.48, s.K_l = K_l, s.K_b = K_b;
+  BeverlooFit held;
+  held.beta = 0.5, held.k = k_held, held.k_err = k_err;
+  s.authors_fixed_lo = held;
+  s.k_at_beta_lo_replica_spread = spread;
+  s.replica_fits = std::isnan(spread) ? 1 : 2;
+  return s;
+}
+
+TEST(PaperClaims, Fig7cCornersAreCheckedWithTheHeldFitWhereTheGridSpansThePapersAxes) {
+  CampaignFits fits;
+  // the authors' labels 1 and 1e3 of K_l, 1e-2 and 1e2 of K_b in our units
+  fits.series.push_back(dp_cell(8.829, 0.002626, 1.67, 0.31));         // ~1: z = 2.2, differs
+  fits.series.push_back(dp_cell(8.829, 26.26, 3.82, 0.15, 0.4));       // ~3.5: sigma 0.4 (spread), z = 0.8
+  fits.series.push_back(dp_cell(8829, 0.002626, 2.3, 0.2));             // ~2: z = 1.5
+  fits.series.push_back(dp_cell(8829, 26.26, 4.0, 0.2));                // the fourth corner: no stated value
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* lo = find(checks, "k ~ 1 at the grid's smallest", fits.series[0].label);
+  ASSERT_NE(lo, nullptr);
+  EXPECT_EQ(lo->verdict, "differs (z = 2.2)");
+  const ClaimCheck* kb = find(checks, "rises to ~3.5", fits.series[1].label);
+  ASSERT_NE(kb, nullptr);
+  EXPECT_DOUBLE_EQ(kb->sigma, 0.4);
+  EXPECT_EQ(kb->verdict, "agrees (z = 0.8)");
+  EXPECT_NE(kb->measured_text.find("spread 0.4 over 2 replicas"), std::string::npos) << kb->measured_text;
+  const ClaimCheck* kl = find(checks, "rises only to ~2", fits.series[2].label);
+  ASSERT_NE(kl, nullptr);
+  EXPECT_EQ(kl->verdict, "agrees (z = 1.5)");
+  for (const ClaimCheck& c : checks)
+    if (c.claim.find("Fig. 7c") != std::string::npos) EXPECT_NE(c.subject, fits.series[3].label) << c.claim;
+  EXPECT_EQ(std::count_if(checks.begin(), checks.end(),
+                          [](const ClaimCheck& c) { return c.claim.find("Fig. 7c") != std::string::npos; }),
+            3);
+  // a grid of two decades of K_b at one K_l spans neither axis: no Fig. 7c check; nor do
+  // friction-only or rough cells
+  CampaignFits narrow;
+  narrow.series.push_back(dp_cell(88.29, 0.02626, 1.2, 0.2));
+  narrow.series.push_back(dp_cell(88.29, 2.626, 2.2, 0.2));
+  Series friction = dp_cell(8.829, 0.002626, 1.0, 0.2);
+  friction.lambda = 0;
+  Series rough = dp_cell(8.829, 26.26, 3.5, 0.2);
+  rough.model = "dp_rough";
+  narrow.series.push_back(friction);
+  narrow.series.push_back(rough);
+  for (const ClaimCheck& c : check_paper_claims(narrow)) EXPECT_EQ(c.claim.find("Fig. 7c"), std::string::npos) << c.claim;
+}
+
 TEST(PaperClaims, TablesEscapeEveryTextCell) {
   CampaignFits fits;
   fits.series.push_back(series("a|b,c\"d\n", 2, 0, 1.5, 0.05));

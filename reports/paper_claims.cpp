@@ -266,10 +266,10 @@ void heatmap_k_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       check(at(kl_lo, kb_lo), "Fig. 7c, drag only: k ~ 1 at the grid's smallest K_l and K_b (the paper's corner K_l = 1, K_b = 1e-2)",
             "~1", 1.0);
     if (kb_span)
-      check(at(kl_lo, kb_hi), "Fig. 7c, drag only: at small K_l k rises to ~3.5 as K_b grows four decades (to 1e2)",
+      check(at(kl_lo, kb_hi), "Fig. 7c, drag only: at the grid's smallest K_l, k rises to ~3.5 as K_b grows four decades (to 1e2)",
             "~3.5", 3.5);
     if (kl_span)
-      check(at(kl_hi, kb_lo), "Fig. 7c, drag only: at small K_b k rises only to ~2 as K_l grows three decades (to 1e3)",
+      check(at(kl_hi, kb_lo), "Fig. 7c, drag only: at the grid's smallest K_b, k rises only to ~2 as K_l grows three decades (to 1e3)",
             "~2", 2.0);
   }
 }

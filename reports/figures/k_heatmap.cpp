@@ -43,7 +43,8 @@ ReportFigure k_heatmap_Kl_Kb(const FigureContext& c) {
     if (lambda != 0 && !std::isinf(lambda)) continue;
     const bool friction = lambda == 0;
     const int dimension = list.front()->dimension;
-    Panel held{label + ", beta held at " + num(friction ? dimension - 0.5 : dimension - 1.5) + " (the paper's way)", {}};
+    // a short suffix: the panel's title must fit half the figure's width
+    Panel held{label + ", beta = " + num(friction ? dimension - 0.5 : dimension - 1.5) + " held", {}};
     for (const Series* s : list)
       if (const auto& fit = friction ? s->authors_fixed_hi : s->authors_fixed_lo) held.cells.emplace_back(s, &*fit);
     add_panel(std::move(held));
@@ -52,7 +53,7 @@ ReportFigure k_heatmap_Kl_Kb(const FigureContext& c) {
     std::ostringstream body;
     body << "set logscale xy\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\n"
          << "set palette defined (0 '#440154', 1 '#3B528B', 2 '#21908C', 3 '#5DC963', 4 '#FDE725')\n"  // viridis
-         << "set cblabel 'k / sigma_avg'\nset cbrange [" << num(k_lo) << ":" << num(k_hi > k_lo ? k_hi : k_lo + 1) << "]\n"
+         << "set cblabel 'k / sigma_avg' noenhanced\nset cbrange [" << num(k_lo) << ":" << num(k_hi > k_lo ? k_hi : k_lo + 1) << "]\n"
          << "set multiplot layout " << (panels.size() > 2 ? 2 : 1) << "," << (panels.size() > 2 ? 2 : panels.size()) << "\n";
     for (const Panel& p : panels) {
       const int block = f.begin_block(p.title + ": K_l K_b k k_err");

@@ -165,7 +165,7 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   EXPECT_NE(heatmap.find("10 10 2.2"), std::string::npos) << heatmap;
   // the drag-only group also as the paper fits k (beta held at 1/2), in its own block: the
   // fixture's Q is exact, so the held fit finds the same k at every cell
-  const std::size_t held = heatmap.find("beta held at 0.5 (the paper's way)");
+  const std::size_t held = heatmap.find(", beta = 0.5 held: K_l K_b k k_err");
   ASSERT_NE(held, std::string::npos) << heatmap;
   for (const char* cell : {"\n1 0.1 1 ", "\n10 0.1 1.2 ", "\n1 10 2 ", "\n10 10 2.2 "})
     EXPECT_NE(heatmap.find(cell, held), std::string::npos) << cell << " in the held block of\n" << heatmap;

@@ -16,14 +16,14 @@ result_data() {
 # one of its workers first. Sets `rounds` and `kills`; fails after 200 rounds. Uses $RANDOM (seed
 # it first) and appends the coordinators' stderr to $WORK/chaos.log.
 run_with_kills() {
-  local sweep=$1 dir=$2 delay_ms=$3 coord delay pid rc
+  local sweep=$1 dir=$2 delay_ms=$3 base_ms=${4:-300} coord delay pid rc
   rounds=0 kills=0
   while :; do
     rounds=$((rounds + 1))
     [ "$rounds" -le 200 ] || fail "$dir: no completion after 200 rounds"
     "$BIN" run "$sweep" --dir "$dir" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
     coord=$!
-    delay=$((RANDOM % delay_ms + 300))
+    delay=$((RANDOM % delay_ms + base_ms))
     sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
     if [ $((RANDOM % 2)) -eq 0 ]; then
       pid=$(pgrep -f "worker $dir" | head -n 1 || true)

@@ -1,7 +1,7 @@
 #include "paper_claims.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>

@@ -12,7 +12,8 @@ result_data() {
   done
 }
 # Runs `beverloo run SWEEP --dir DIR --workers 2` until it finishes, SIGKILLing the coordinator
-# after a random delay of 300 .. 300 + DELAY_MS ms each round and, every other round on average,
+# after a random delay of BASE_MS .. BASE_MS + DELAY_MS ms (usage: run_with_kills SWEEP DIR
+# DELAY_MS [BASE_MS, default 300]) each round and, every other round on average,
 # one of its workers first. Sets `rounds` and `kills`; fails after 200 rounds. Uses $RANDOM (seed
 # it first) and appends the coordinators' stderr to $WORK/chaos.log.
 run_with_kills() {

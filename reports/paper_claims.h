@@ -5,7 +5,7 @@
 /// dissipation limits (d - 1/2 with friction only, d - 3/2 with drag only, for SP and DP), that
 /// the exponent of a limit does not depend on the model or its stiffness, nor on N >= 800, lambda_c and the
 /// stretching exponent of beta(lambda), the ratio of the prefactors C of the two limits, the
-/// corners of Fig. 7c's k map (drag-only smooth DP, k with beta held), and the experiments'
+/// corners of Fig. 7b's and 7c's k maps (smooth DP in each limit, k with beta held), and the experiments'
 /// beta and k. Each check names the series or group it read, the paper's value,
 /// the measured one with its error (and the replicas' spread where there is one), and a verdict
 /// by one stated rule. The paper's values carry no errors ("~" in its text), so the rule uses the

@@ -223,8 +223,9 @@ TEST(PaperClaims, Fig7cCornersAreCheckedWithTheHeldFitWhereTheGridSpansThePapers
   const ClaimCheck* kl = find(checks, "rises only to ~2", fits.series[2].label);
   ASSERT_NE(kl, nullptr);
   EXPECT_EQ(kl->verdict, "agrees (z = 1.5)");
-  for (const ClaimCheck& c : checks)
-    if (c.claim.find("Fig. 7c") != std::string::npos) EXPECT_NE(c.subject, fits.series[3].label) << c.claim;
+  for (const ClaimCheck& c : checks) {
+    if (c.claim.find("Fig. 7c") != std::string::npos) { EXPECT_NE(c.subject, fits.series[3].label) << c.claim; }
+  }
   EXPECT_EQ(std::count_if(checks.begin(), checks.end(),
                           [](const ClaimCheck& c) { return c.claim.find("Fig. 7c") != std::string::npos; }),
             3);
@@ -240,6 +241,61 @@ TEST(PaperClaims, Fig7cCornersAreCheckedWithTheHeldFitWhereTheGridSpansThePapers
   narrow.series.push_back(friction);
   narrow.series.push_back(rough);
   for (const ClaimCheck& c : check_paper_claims(narrow)) EXPECT_EQ(c.claim.find("Fig. 7c"), std::string::npos) << c.claim;
+}
+
+/// A friction-only smooth DP cell of Fig. 7b (the authors' tangential friction) with k from the
+/// held fit (beta = 3/2).
+Series dp_friction_cell(double K_l, double K_b, double k_held, double k_err, double spread = NAN) {
+  Series s = dp_cell(K_l, K_b, NAN, NAN);
+  s.lambda = 0, s.drag_rate = 0, s.mu_n = 0.0, s.mu_t = 8.5052;
+  s.authors_fixed_lo.reset();
+  BeverlooFit held;
+  held.beta = 1.5, held.k = k_held, held.k_err = k_err;
+  s.authors_fixed_hi = held;
+  s.k_at_beta_hi_replica_spread = spread;
+  s.replica_fits = std::isnan(spread) ? 1 : 2;
+  return s;
+}
+
+TEST(PaperClaims, Fig7bFrictionOnlyKIsBelowOneAtSoftKbAndNearOneAndAHalfAtStiffKb) {
+  auto fig7b = [](const std::vector<ClaimCheck>& checks) {
+    std::vector<const ClaimCheck*> out;
+    for (const ClaimCheck& c : checks)
+      if (c.claim.find("Fig. 7b") != std::string::npos) out.push_back(&c);
+    return out;
+  };
+  CampaignFits fits;
+  fits.series.push_back(dp_friction_cell(8.829, 0.002626, 0.7, 0.2));      // below 1
+  fits.series.push_back(dp_friction_cell(8.829, 26.26, 1.35, 0.05, 0.1));  // ~1.5: sigma 0.1 (spread), z = 1.5
+  fits.series.push_back(dp_cell(8.829, 0.002626, 1.0, 0.2));               // drag only: Fig. 7c's, not 7b's
+  auto checks = check_paper_claims(fits);
+  auto b = fig7b(checks);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0]->subject, fits.series[0].label);
+  EXPECT_EQ(b[0]->paper, "< 1");
+  EXPECT_EQ(b[0]->verdict, "agrees (below it)");
+  EXPECT_NE(b[0]->measured_text.find("beta held at 3/2"), std::string::npos) << b[0]->measured_text;
+  EXPECT_EQ(b[1]->subject, fits.series[1].label);
+  EXPECT_DOUBLE_EQ(b[1]->sigma, 0.1);
+  EXPECT_EQ(b[1]->verdict, "agrees (z = 1.5)");
+  for (const ClaimCheck& c : checks) {
+    if (c.claim.find("Fig. 7c") != std::string::npos) { EXPECT_EQ(c.subject, fits.series[2].label) << c.claim; }
+  }
+
+  // above the bound by more than two sigma: differs; a stiff cell far from 1.5 differs too
+  fits.series[0] = dp_friction_cell(8.829, 0.002626, 1.6, 0.2);
+  fits.series[1] = dp_friction_cell(8.829, 26.26, 2.5, 0.2);
+  checks = check_paper_claims(fits);
+  b = fig7b(checks);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0]->verdict, "differs (z = 3.0 above it)");
+  EXPECT_FALSE(b[1]->agrees);
+
+  // two decades of K_b do not span the paper's axis: no check
+  CampaignFits narrow;
+  narrow.series.push_back(dp_friction_cell(8.829, 0.02626, 0.7, 0.2));
+  narrow.series.push_back(dp_friction_cell(8.829, 2.626, 1.4, 0.2));
+  EXPECT_TRUE(fig7b(check_paper_claims(narrow)).empty());
 }
 
 TEST(PaperClaims, TablesEscapeEveryTextCell) {

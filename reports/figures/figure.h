@@ -55,6 +55,7 @@ ReportFigure q_vs_w(const FigureContext& c);
 ReportFigure q_prime_vs_w(const FigureContext& c);
 ReportFigure loglog_collapse(const FigureContext& c);
 ReportFigure beta_vs_lambda(const FigureContext& c);
+ReportFigure lambda_c_vs_theta(const FigureContext& c);
 ReportFigure k_vs_Esp(const FigureContext& c);
 ReportFigure k_vs_Kb(const FigureContext& c);
 ReportFigure k_heatmap_Kl_Kb(const FigureContext& c);

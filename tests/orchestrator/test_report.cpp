@@ -38,6 +38,9 @@ fs::path make_fixture(const double lambda_c, const double b) {
                       {"sweep", {{"union", {{{"product", {{{"E_sp", {100, 1000}}}, {{"lambda", {0, "inf"}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             {{"product", {{{"E_sp", 100}}, {{"lambda", {{"logspace", {-3, 1, 9}}}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             {{"E_sp", 50}, {"lambda", 0.5}, {"w", {4, 5, 6}}},
+                                            // the same group in a steeper hopper (Fig. 6): lambda_c four times smaller
+                                            {{"product", {{{"E_sp", 100}}, {{"theta_w_deg", 60}}, {{"lambda", {0, "inf", 1e-3, 1e-2, 0.1, 1, 10}}},
+                                                          {{"w", {4, 5, 6, 7, 8}}}}}},
                                             // near k: four seeds each, two of which clog (the clog statistics)
                                             {{"E_sp", 1000}, {"lambda", 0}, {"w", {2.5, 3}}, {"seed", {1, 2, 3, 4}}},
                                             {{"product", {{{"model", "dp_smooth"}}, {{"dp.K_l", {1, 10}}}, {{"dp.K_b", {0.1, 10}}},
@@ -48,7 +51,8 @@ fs::path make_fixture(const double lambda_c, const double b) {
     const json j = json::parse(job->job_json);
     const double zeta = j["zeta"], mu = j["mu"], w = j["w"];
     const double lambda = mu > 0 ? zeta / mu : INFINITY;
-    const double beta = std::isinf(lambda) ? 0.5 : (lambda == 0 ? 1.5 : crossover_model(2, lambda, lambda_c, b));
+    const bool steep = j["theta_w_left_deg"].get<double>() == 60;
+    const double beta = std::isinf(lambda) ? 0.5 : (lambda == 0 ? 1.5 : crossover_model(2, lambda, steep ? lambda_c / 4 : lambda_c, b));
     // SP: k from E_sp; DP: k = 1.5 + 0.5 log10(K_b) + 0.2 log10(K_l) (1 to 2.7 over the grid)
     const double k = j["model"] == "sp" ? (j["E_sp"].get<double>() > 500 ? 2.0 : 1.0)
                                         : 1.5 + 0.5 * std::log10(j["dp"]["K_b"].get<double>()) +
@@ -63,7 +67,7 @@ fs::path make_fixture(const double lambda_c, const double b) {
                           {"exits_total", 600}, {"clogged", clogs}, {"clog_time", clogs ? 30.0 * j.value("seed", 0) : -1.0},
                           {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
                           {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
-                          {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
+                          {"force_ratio", steep ? 0.8 : 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
                           {"particle_steps_per_second", 3e7}};
     std::vector<double> h, v, e;
     for (int i = 0; i < 20; ++i) {
@@ -142,7 +146,7 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
     EXPECT_NE(index.find(f.name + ".svg"), std::string::npos) << f.name;
     EXPECT_NE(index.find(f.name + ".png"), std::string::npos) << f.name;
   }
-  EXPECT_EQ(made, 10);  // Q(w), collapse, beta(lambda), k(E_sp), k(K_b), k(K_l, K_b), profiles, the three regimes, clog survival, Q'(w)
+  EXPECT_EQ(made, 11);  // Q(w), collapse, beta(lambda), lambda_c(theta_w), k(E_sp), k(K_b), k(K_l, K_b), profiles, the three regimes, clog survival, Q'(w)
   // the fits, through the SQL views
   db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
   db::Statement st = db.prepare("SELECT beta, k, C FROM beverloo_fits WHERE E_sp = 1000 AND mu = 0");
@@ -172,7 +176,18 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   db::Statement short_series = db.prepare("SELECT message FROM beverloo_fits WHERE E_sp = 50");
   ASSERT_TRUE(short_series.step());
   EXPECT_NE(short_series.get_text(0).find("need at least 4"), std::string::npos);
-  db::Statement x = db.prepare("SELECT lambda_c, b, beta_lambda0, beta_inf, points FROM crossover_fits WHERE lambda_c IS NOT NULL");
+  // Fig. 6's form: lambda_c of each angle's group (0.05 at 90 deg, 0.0125 at 60) and the force
+  // ratio of the series at lambda = 1e-2 (the fixture's 0.5 and 0.8)
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  const std::size_t fixed = theta.find("lambda_c_err (the paper's fixed plateaus)");
+  ASSERT_NE(fixed, std::string::npos) << theta;
+  for (const char* row : {"\n60 0.0125", "\n90 0.05"}) EXPECT_NE(theta.find(row, fixed), std::string::npos) << row << " in\n" << theta;
+  const std::size_t ratio = theta.find("theta_w force_ratio force_ratio_err lambda runs");
+  ASSERT_NE(ratio, std::string::npos) << theta;
+  for (const char* row : {"\n60 0.8 0 0.01 5", "\n90 0.5 0 0.01 5"})
+    EXPECT_NE(theta.find(row, ratio), std::string::npos) << row << " in\n" << theta;
+  db::Statement x = db.prepare(
+      "SELECT lambda_c, b, beta_lambda0, beta_inf, points FROM crossover_fits WHERE lambda_c IS NOT NULL AND points = 9");
   ASSERT_TRUE(x.step());
   EXPECT_NEAR(x.get_double(0), 0.05, 1e-3);
   EXPECT_NEAR(x.get_double(1), 0.8, 1e-2);

@@ -191,17 +191,25 @@ TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
   EXPECT_TRUE(checks[1].agrees);
 }
 
-/// A drag-only smooth DP cell of Fig. 7c with k from the held fit (beta = 1/2).
-Series dp_cell(double K_l, double K_b, double k_held, double k_err, double spread = NAN) {
-  Series s = series("DP K_l=" + std::to_string(K_l) + " K_b=" + std::to_string(K_b), 2, INFINITY, 0.5, 0.05);
+/// A smooth DP cell of Fig. 7 in one dissipation limit, with k from the held fit: drag only
+/// (Fig. 7c, beta = 1/2) or the authors' tangential friction only (Fig. 7b, beta = 3/2).
+Series dp_cell_in_limit(bool friction, double K_l, double K_b, double k_held, double k_err, double spread) {
+  Series s = series("DP K_l=" + std::to_string(K_l) + " K_b=" + std::to_string(K_b), 2, friction ? 0 : INFINITY,
+                    friction ? 1.5 : 0.5, 0.05);
   s.model = "dp_smooth";
   s.n_v = 16, s.K_a = 3055.8, s.E_c = 231.48, s.K_l = K_l, s.K_b = K_b;
+  if (friction) s.mu_n = 0.0, s.mu_t = 8.5052;
   BeverlooFit held;
-  held.beta = 0.5, held.k = k_held, held.k_err = k_err;
-  s.authors_fixed_lo = held;
-  s.k_at_beta_lo_replica_spread = spread;
+  held.beta = friction ? 1.5 : 0.5, held.k = k_held, held.k_err = k_err;
+  (friction ? s.authors_fixed_hi : s.authors_fixed_lo) = held;
+  (friction ? s.k_at_beta_hi_replica_spread : s.k_at_beta_lo_replica_spread) = spread;
   s.replica_fits = std::isnan(spread) ? 1 : 2;
   return s;
+}
+
+/// A drag-only cell of Fig. 7c.
+Series dp_cell(double K_l, double K_b, double k_held, double k_err, double spread = NAN) {
+  return dp_cell_in_limit(false, K_l, K_b, k_held, k_err, spread);
 }
 
 TEST(PaperClaims, Fig7cCornersAreCheckedWithTheHeldFitWhereTheGridSpansThePapersAxes) {
@@ -246,15 +254,7 @@ TEST(PaperClaims, Fig7cCornersAreCheckedWithTheHeldFitWhereTheGridSpansThePapers
 /// A friction-only smooth DP cell of Fig. 7b (the authors' tangential friction) with k from the
 /// held fit (beta = 3/2).
 Series dp_friction_cell(double K_l, double K_b, double k_held, double k_err, double spread = NAN) {
-  Series s = dp_cell(K_l, K_b, NAN, NAN);
-  s.lambda = 0, s.drag_rate = 0, s.mu_n = 0.0, s.mu_t = 8.5052;
-  s.authors_fixed_lo.reset();
-  BeverlooFit held;
-  held.beta = 1.5, held.k = k_held, held.k_err = k_err;
-  s.authors_fixed_hi = held;
-  s.k_at_beta_hi_replica_spread = spread;
-  s.replica_fits = std::isnan(spread) ? 1 : 2;
-  return s;
+  return dp_cell_in_limit(true, K_l, K_b, k_held, k_err, spread);
 }
 
 TEST(PaperClaims, Fig7bFrictionOnlyKIsBelowOneAtSoftKbAndNearOneAndAHalfAtStiffKb) {

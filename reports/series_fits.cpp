@@ -36,15 +36,6 @@ void pool_points(Series& s, const std::vector<RunRecord>& runs) {
   }
 }
 
-/// The sample standard deviation (NaN below two values).
-double sample_sd(const std::vector<double>& v) {
-  if (v.size() < 2) return NAN;
-  double mean = 0, ss = 0;
-  for (double x : v) mean += x / v.size();
-  for (double x : v) ss += (x - mean) * (x - mean);
-  return std::sqrt(ss / (v.size() - 1));
-}
-
 /// The run-to-run spread: each replica (seed) fitted alone where it has every width the pooled
 /// fit used; the sample standard deviation of their betas and ks, beside the fit's own error
 /// (the pooled fit's error says how well one set of points fixes beta, not how far another
@@ -124,6 +115,14 @@ void fit_series(Series& s, const std::vector<RunRecord>& runs) {
       // too few points above the authors' flow threshold: NULL in the table
     }
   }
+}
+
+double sample_sd(const std::vector<double>& v) {
+  if (v.size() < 2) return NAN;
+  double mean = 0, ss = 0;
+  for (double x : v) mean += x / v.size();
+  for (double x : v) ss += (x - mean) * (x - mean);
+  return std::sqrt(ss / (v.size() - 1));
 }
 
 }  // namespace beverloo

@@ -11,4 +11,7 @@ namespace beverloo {
 
 void fit_series(Series& s, const std::vector<RunRecord>& runs);
 
+/// The sample standard deviation (NaN below two values).
+double sample_sd(const std::vector<double>& v);
+
 }  // namespace beverloo

@@ -11,6 +11,7 @@
 
 #include "core/text_escape.h"
 #include "figure.h"
+#include "reports/series_fits.h"
 
 namespace beverloo::figures {
 namespace {
@@ -48,12 +49,9 @@ Ratio force_ratio(db::Database& db, const Series& s) {
   out.lambda = s.lambda;
   out.runs = static_cast<int>(values.size());
   if (values.empty()) return out;
-  double mean = 0;
-  for (double v : values) mean += v / values.size();
-  double ss = 0;
-  for (double v : values) ss += (v - mean) * (v - mean);
-  out.mean = mean;
-  out.err = values.size() > 1 ? std::sqrt(ss / (values.size() - 1) / values.size()) : 0;
+  out.mean = 0;
+  for (double v : values) out.mean += v / values.size();
+  out.err = values.size() > 1 ? sample_sd(values) / std::sqrt(values.size()) : 0;
   return out;
 }
 
@@ -102,12 +100,10 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
            << " using 1:2:3 with yerrorlines dt 2 " << style.substr(0, style.find(" pt")) << " pt 4 title " << gnuplot_string(family + ", plateaus free");
       const int ratio = f.begin_block(family + ": theta_w force_ratio force_ratio_err lambda runs");
       for (const auto& [theta, g] : by_theta) {
-        const Series* nearest = nullptr;
-        for (const Series* s : g->finite)
-          if (!nearest || std::fabs(std::log10(s->lambda / kForceRatioLambda)) <
-                              std::fabs(std::log10(nearest->lambda / kForceRatioLambda)))
-            nearest = s;
-        if (std::fabs(std::log10(nearest->lambda / kForceRatioLambda)) > kForceRatioMaxDecades) continue;
+        auto decades_off = [](const Series* s) { return std::fabs(std::log10(s->lambda / kForceRatioLambda)); };
+        const Series* nearest = *std::min_element(g->finite.begin(), g->finite.end(),
+                                                  [&](const Series* a, const Series* b) { return decades_off(a) < decades_off(b); });
+        if (decades_off(nearest) > kForceRatioMaxDecades) continue;
         const Ratio r = force_ratio(c.db, *nearest);
         if (r.runs == 0) continue;
         any_ratio = true;

@@ -26,6 +26,9 @@ struct SeriesPoint {
 
 struct Series {
   std::string key, label, base_key;  ///< base_key: without zeta and mu (finds the lambda limits)
+  /// base_key without the hopper angles as well: the beta(lambda) groups that share it differ
+  /// only in theta_w (the paper's Fig. 6)
+  std::string angle_free_key;
   /// Replicas with a flow rate but no usable error (Q_err not > 0 or not a number): left out
   /// of the pooled points and the fit, and said so (never pooled as Q = 0 +- 0).
   int left_out = 0;
@@ -93,6 +96,9 @@ std::string fit_quality(const Series& s);
 
 struct Crossover {
   std::string key, label;
+  /// The same for every group that differs from this one only in the hopper angles (and in
+  /// nothing else: not E_w, not the reinjection rule): the series of the paper's Fig. 6.
+  std::string angle_family;
   int dimension = 2;
   std::vector<const Series*> finite;  ///< the finite lambda > 0 series with a fit, by lambda
   /// the finite lambda of its series without a fit (too few flowing widths): a lambda the group

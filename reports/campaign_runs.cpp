@@ -105,6 +105,9 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
       base.erase("mu_n");  // a friction split belongs to the friction: limits match on mu and mu_n
       base.erase("mu_t");
       s.base_key = sha256_hex(base.dump());
+      base.erase("theta_w_left_deg");
+      base.erase("theta_w_right_deg");
+      s.angle_free_key = sha256_hex(base.dump());
       out.base_job_of[key] = base;
       series_jobs.push_back(series_job);
       std::ostringstream label;

@@ -45,6 +45,7 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
     if (s.mu_t) gkey += "|mu_t=" + fmt(*s.mu_t, 12);
     Crossover& g = groups[gkey];
     g.key = sha256_hex(gkey);
+    g.angle_family = sha256_hex(s.angle_free_key + gkey.substr(gkey.find('|')));
     g.dimension = s.dimension;
     g.label = std::to_string(s.dimension) + "D " + s.stiffness + " zeta=" + fmt(s.zeta, 3) + " N=" + std::to_string(s.N);
     if (std::isinf(s.lambda))
@@ -77,6 +78,7 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
     const std::string gkey = s.base_key + "|rate_drag|mu_n=" + (s.mu_n ? fmt(*s.mu_n, 12) : "mu");
     Crossover& g = by_rate_drag[gkey];
     g.key = sha256_hex(gkey);
+    g.angle_family = sha256_hex(s.angle_free_key + gkey.substr(gkey.find('|')));
     g.dimension = s.dimension;
     if (s.fit)
       g.finite.push_back(&s);

@@ -16,9 +16,11 @@
 namespace beverloo::figures {
 namespace {
 
-/// The groups' family: what a theta_w series of beta(lambda) groups shares (the model, its
-/// stiffness, d, N and the lambda axis: the text's zeta / mu or the authors' drag rate).
-std::string family_of(const Series& s) {
+/// A family's name: what a theta_w series of beta(lambda) groups shares that a reader tells
+/// families apart by (the model, its stiffness, d, N and the lambda axis: the text's zeta / mu
+/// or the authors' drag rate). Two families can share it (E_w or the reinjection rule differ);
+/// they are told apart by their key (see lambda_c_vs_theta).
+std::string family_name(const Series& s) {
   return std::to_string(s.dimension) + "D " + s.stiffness + " N=" + std::to_string(s.N) +
          (s.drag_rate > 0 ? " (drag rate)" : "");
 }
@@ -61,16 +63,30 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
   Figure f("lambda_c_vs_theta",
            "Crossover lambda_c and the drag-to-friction force ratio versus the hopper angle theta_w (the paper's Fig. 6)",
            "theta_w (deg)", "lambda_c");
-  // family -> theta_w -> the group (the first one at that angle)
-  std::map<std::string, std::map<double, const Crossover*>> families;
+  // Families: the groups that differ only in theta_w (Crossover::angle_family), so that one
+  // angle holds exactly one group of a family; each family -> theta_w -> its group.
+  struct Family {
+    std::string name;
+    std::map<double, const Crossover*> by_theta;
+  };
+  std::map<std::string, Family> by_key;
   for (const Crossover& g : c.fits.crossovers) {
     if (g.finite.empty() || (!g.fit && !g.fit_free)) continue;
     const Series& s = *g.finite.front();
     if (s.theta_left != s.theta_right) continue;
-    families[family_of(s)].emplace(s.theta_left, &g);
+    Family& family = by_key[g.angle_family];
+    family.name = family_name(s);
+    family.by_theta.emplace(s.theta_left, &g);
   }
-  for (auto it = families.begin(); it != families.end();)
-    it = it->second.size() < 2 ? families.erase(it) : std::next(it);
+  // by name (a stable order for the figure), a name shared by families made unique by their key
+  std::map<std::string, int> name_uses;
+  for (const auto& [key, family] : by_key)
+    if (family.by_theta.size() >= 2) ++name_uses[family.name];
+  std::map<std::string, std::map<double, const Crossover*>> families;
+  for (const auto& [key, family] : by_key)
+    if (family.by_theta.size() >= 2)
+      families.emplace(name_uses[family.name] > 1 ? family.name + " [" + key.substr(0, 8) + "]" : family.name,
+                       family.by_theta);
   if (!families.empty()) {
     std::ostringstream left, right;
     left << "set title 'lambda_c (midpoint of beta(lambda))' noenhanced font ',9'\nset logscale y\n"

@@ -116,6 +116,54 @@ TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
   fs::remove_all(dir);
 }
 
+/// Fig. 6's families: beta(lambda) groups that differ only in theta_w are one family, and two
+/// families that differ in something else (here the wall stiffness E_w) are two, even where
+/// their names (model, stiffness, d, N) are the same.
+TEST(Report, LambdaCVersusThetaKeepsGroupsThatDifferInMoreThanTheAngleApart) {
+  const fs::path dir = fs::temp_directory_path() / ("beverloo-report-" + new_token());
+  fs::create_directories(dir / "jobs");
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
+  db::open_store(db);
+  CampaignStore store(db);
+  const json sweep = {{"name", "angles"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"E_w", {1e3, 1e4}}}, {{"theta_w_deg", {90, 60}}},
+                                              {{"lambda", {0, "inf", 1e-3, 1e-2, 0.1, 1, 10}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const Sweep s = Sweep::parse(sweep, "angles");
+  const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
+  while (auto job = store.claim_next(id, "local", "test")) {
+    const json j = json::parse(job->job_json);
+    const double zeta = j["zeta"], mu = j["mu"], w = j["w"];
+    const double lambda = mu > 0 ? zeta / mu : INFINITY;
+    // lambda_c: 0.05 at 90 deg, 0.0125 at 60 with the softer walls; twice both with the stiffer
+    const double lambda_c = (j["theta_w_left_deg"].get<double>() == 60 ? 0.0125 : 0.05) * (j["E_w"].get<double>() > 5e3 ? 2 : 1);
+    const double beta = std::isinf(lambda) ? 0.5 : (lambda == 0 ? 1.5 : crossover_model(2, lambda, lambda_c, 0.8));
+    const double Q = beverloo_model(w, 0.4, 1.0, beta);
+    const json summary = {{"status", "converged"}, {"Q", Q}, {"Q_err", 0.02 * Q}, {"Q_rel_err", 0.02},
+                          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
+                          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
+                          {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
+                          {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
+                          {"particle_steps_per_second", 3e7}};
+    store.ingest_success(*job, summary.dump(), {}, {}, {});
+  }
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  // two fixed-plateau blocks, each with its own pair of angles
+  std::vector<std::string> blocks;
+  for (std::size_t at = theta.find("(the paper's fixed plateaus)"); at != std::string::npos;
+       at = theta.find("(the paper's fixed plateaus)", at + 1))
+    blocks.push_back(theta.substr(at, theta.find("\n\n", at) - at));
+  ASSERT_EQ(blocks.size(), 2u) << theta;
+  const bool soft_first = blocks[0].find("\n90 0.05") != std::string::npos;
+  const std::string& soft = blocks[soft_first ? 0 : 1];
+  const std::string& stiff = blocks[soft_first ? 1 : 0];
+  for (const char* row : {"\n90 0.05", "\n60 0.0125"}) EXPECT_NE(soft.find(row), std::string::npos) << row << " in\n" << theta;
+  for (const char* row : {"\n90 0.1", "\n60 0.025"}) EXPECT_NE(stiff.find(row), std::string::npos) << row << " in\n" << theta;
+  fs::remove_all(dir);
+}
+
 TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   const fs::path dir = make_fixture(0.05, 0.8);
   const fs::path out = dir / "report";

@@ -25,6 +25,31 @@ std::string read(const fs::path& p) {
   return ss.str();
 }
 
+/// A converged run's summary: Q with its error and fixed other observables.
+json converged_summary(double Q, double Q_err, double force_ratio = 0.5) {
+  return {{"status", "converged"}, {"Q", Q}, {"Q_err", Q_err}, {"Q_rel_err", Q_err / Q},
+          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
+          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
+          {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
+          {"force_ratio", force_ratio}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
+          {"particle_steps_per_second", 3e7}};
+}
+
+/// A new campaign directory holding the sweep, every job ingested with summary_of(its job json).
+template <class SummaryOf>
+fs::path campaign_of(const json& sweep, SummaryOf summary_of) {
+  const fs::path dir = fs::temp_directory_path() / ("beverloo-report-" + new_token());
+  fs::create_directories(dir / "jobs");
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
+  db::open_store(db);
+  CampaignStore store(db);
+  const Sweep s = Sweep::parse(sweep, sweep["name"].get<std::string>());
+  const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
+  while (auto job = store.claim_next(id, "local", "test"))
+    store.ingest_success(*job, summary_of(json::parse(job->job_json)).dump(), {}, {}, {});
+  return dir;
+}
+
 /// A campaign over lambda (with both limits), E_sp and w whose results follow
 /// Q = C (w - k)^beta(lambda) exactly (2 % errors), beta on the crossover sigmoid.
 fs::path make_fixture(const double lambda_c, const double b) {
@@ -81,28 +106,15 @@ fs::path make_fixture(const double lambda_c, const double b) {
 }
 
 TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
-  const fs::path dir = fs::temp_directory_path() / ("beverloo-report-" + new_token());
-  fs::create_directories(dir / "jobs");
-  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
   const json sweep = {{"name", "errs"}, {"base", {{"N", 400}, {"W", 25}, {"zeta", 0.3}, {"mu", 0}}},
                       {"sweep", {{"w", {4, 5, 6, 7, 8}}}}};
-  const Sweep s = Sweep::parse(sweep, "errs");
-  const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
-  while (auto job = store.claim_next(id, "local", "test")) {
-    const double w = json::parse(job->job_json)["w"];
+  const fs::path dir = campaign_of(sweep, [](const json& job) {
+    const double w = job["w"];
     const double Q = beverloo_model(w, 0.4, 1.0, 0.5);
     // w = 6: a rate with an error of 0, w = 7: a negative error; neither can be weighted
-    const double err = w == 6 ? 0.0 : (w == 7 ? -0.01 : 0.02 * Q);
-    const json summary = {{"status", "converged"}, {"Q", Q}, {"Q_err", err}, {"Q_rel_err", err / Q},
-                          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
-                          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
-                          {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
-                          {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
-                          {"particle_steps_per_second", 3e7}};
-    store.ingest_success(*job, summary.dump(), {}, {}, {});
-  }
+    return converged_summary(Q, w == 6 ? 0.0 : (w == 7 ? -0.01 : 0.02 * Q));
+  });
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
   const CampaignFits fits = fit_campaign(db);
   ASSERT_EQ(fits.series.size(), 1u);
   const Series& series = fits.series[0];
@@ -120,33 +132,19 @@ TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
 /// families that differ in something else (here the wall stiffness E_w) are two, even where
 /// their names (model, stiffness, d, N) are the same.
 TEST(Report, LambdaCVersusThetaKeepsGroupsThatDifferInMoreThanTheAngleApart) {
-  const fs::path dir = fs::temp_directory_path() / ("beverloo-report-" + new_token());
-  fs::create_directories(dir / "jobs");
-  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadWrite);
-  db::open_store(db);
-  CampaignStore store(db);
   const json sweep = {{"name", "angles"},
                       {"base", {{"N", 400}, {"W", 25}}},
                       {"sweep", {{"product", {{{"E_w", {1e3, 1e4}}}, {{"theta_w_deg", {90, 60}}},
                                               {{"lambda", {0, "inf", 1e-3, 1e-2, 0.1, 1, 10}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
-  const Sweep s = Sweep::parse(sweep, "angles");
-  const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
-  while (auto job = store.claim_next(id, "local", "test")) {
-    const json j = json::parse(job->job_json);
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
     const double zeta = j["zeta"], mu = j["mu"], w = j["w"];
     const double lambda = mu > 0 ? zeta / mu : INFINITY;
     // lambda_c: 0.05 at 90 deg, 0.0125 at 60 with the softer walls; twice both with the stiffer
     const double lambda_c = (j["theta_w_left_deg"].get<double>() == 60 ? 0.0125 : 0.05) * (j["E_w"].get<double>() > 5e3 ? 2 : 1);
     const double beta = std::isinf(lambda) ? 0.5 : (lambda == 0 ? 1.5 : crossover_model(2, lambda, lambda_c, 0.8));
     const double Q = beverloo_model(w, 0.4, 1.0, beta);
-    const json summary = {{"status", "converged"}, {"Q", Q}, {"Q_err", 0.02 * Q}, {"Q_rel_err", 0.02},
-                          {"window_start", 20}, {"window_end", 200}, {"exits_in_window", 500}, {"exits_total", 600},
-                          {"clogged", false}, {"clog_time", -1}, {"rho_n", 1.1}, {"a_eff", 0.9}, {"Q_prime", Q},
-                          {"Q_prime_err", 0.02 * Q}, {"mean_F_drag", 0.1}, {"mean_F_friction", 0.2},
-                          {"force_ratio", 0.5}, {"dt", 1e-3}, {"steps", 200000}, {"wall_seconds", 2.5},
-                          {"particle_steps_per_second", 3e7}};
-    store.ingest_success(*job, summary.dump(), {}, {}, {});
-  }
+    return converged_summary(Q, 0.02 * Q);
+  });
   const fs::path out = dir / "report";
   write_report(dir.string(), out.string());
   const std::string theta = read(out / "lambda_c_vs_theta.dat");

@@ -3,11 +3,13 @@
 // in theta_w, both crossover fits (the paper's fixed plateaus, and free ones), with the paper's
 // stated values in grey (5e-2 at 90 deg, 6e-3 at 20 deg, a plateau ~5e-3 for theta_w <= 30 deg);
 // (right, its panel b) the ratio of the mean drag force to the mean friction force on a particle,
-// |F_zeta| / |F_mu|, against theta_w at the group's lambda nearest 1e-2 (the paper's lambda),
-// averaged over that series' runs (error: their standard error). Never rescaled.
+// |F_zeta| / |F_mu|, against theta_w at the paper's lambda = 1e-2: each series' mean over its
+// runs (error: their standard error), interpolated in log-log between the two series of the group
+// that bracket 1e-2, so that every angle is read at the same lambda. Never rescaled.
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/text_escape.h"
 #include "figure.h"
@@ -25,9 +27,11 @@ std::string family_name(const Series& s) {
          (s.drag_rate > 0 ? " (drag rate)" : "");
 }
 
-/// The paper's lambda for the force ratio (Fig. 6b) and how far (in decades) a group's nearest
-/// lambda may be from it.
+/// The paper's lambda for the force ratio (Fig. 6b); how far (in decades) each of the two series
+/// that bracket it may lie for an interpolation, and how far the nearest series may lie when
+/// the group's lambdas do not bracket it.
 constexpr double kForceRatioLambda = 1e-2;
+constexpr double kForceRatioBracketDecades = 1.0;
 constexpr double kForceRatioMaxDecades = 0.5;
 
 struct Ratio {
@@ -54,6 +58,61 @@ Ratio force_ratio(db::Database& db, const Series& s) {
   out.mean = 0;
   for (double v : values) out.mean += v / values.size();
   out.err = values.size() > 1 ? sample_sd(values) / std::sqrt(values.size()) : 0;
+  return out;
+}
+
+/// A group's force ratio read at the paper's lambda, and the lambdas it was read from.
+struct RatioAtPaperLambda {
+  double lambda = NAN;  // kForceRatioLambda when bracketed (or hit), else the nearest series' lambda
+  double mean = NAN, err = NAN;
+  double lambda_below = NAN, lambda_above = NAN;
+  int runs = 0;
+};
+
+/// The ratio is close to proportional to lambda (|F_zeta| = zeta |v|, |F_mu| = mu x a contact
+/// force that changes slowly with lambda), so it is interpolated linearly in log ratio against
+/// log lambda between the bracketing series; its relative error is propagated from theirs.
+/// Reading each angle at its own nearest lambda instead biased the comparison by the ratio of
+/// those lambdas (0.010 against 0.018 in the SP campaign).
+std::optional<RatioAtPaperLambda> ratio_at_paper_lambda(db::Database& db, const Crossover& g) {
+  auto decades = [](double lambda) { return std::log10(lambda / kForceRatioLambda); };
+  std::vector<Ratio> below, above;  // flowing series with a ratio, on each side of 1e-2
+  for (const Series* s : g.finite) {
+    const double off = decades(s->lambda);
+    if (std::fabs(off) > kForceRatioBracketDecades) continue;
+    const Ratio r = force_ratio(db, *s);
+    if (r.runs == 0) continue;
+    (off <= 0 ? below : above).push_back(r);
+  }
+  auto closest = [&](const std::vector<Ratio>& side) {
+    return *std::min_element(side.begin(), side.end(), [&](const Ratio& a, const Ratio& b) {
+      return std::fabs(decades(a.lambda)) < std::fabs(decades(b.lambda));
+    });
+  };
+  RatioAtPaperLambda out;
+  if (!below.empty() && !above.empty()) {
+    const Ratio lo = closest(below), hi = closest(above);
+    out.lambda = kForceRatioLambda;
+    out.lambda_below = lo.lambda;
+    out.lambda_above = hi.lambda;
+    out.runs = lo.runs + hi.runs;
+    for (const Ratio& at : {lo, hi})
+      if (std::fabs(decades(at.lambda)) < 1e-9) {  // a series at the paper's lambda itself
+        out.mean = at.mean, out.err = at.err, out.runs = at.runs;
+        out.lambda_below = out.lambda_above = at.lambda;
+        return out;
+      }
+    const double t = -decades(lo.lambda) / (decades(hi.lambda) - decades(lo.lambda));
+    out.mean = std::exp((1 - t) * std::log(lo.mean) + t * std::log(hi.mean));
+    out.err = out.mean * std::hypot((1 - t) * lo.err / lo.mean, t * hi.err / hi.mean);
+    return out;
+  }
+  const std::vector<Ratio>& side = below.empty() ? above : below;
+  if (side.empty()) return std::nullopt;
+  const Ratio nearest = closest(side);
+  if (std::fabs(decades(nearest.lambda)) > kForceRatioMaxDecades) return std::nullopt;
+  out.lambda = out.lambda_below = out.lambda_above = nearest.lambda;
+  out.mean = nearest.mean, out.err = nearest.err, out.runs = nearest.runs;
   return out;
 }
 
@@ -98,7 +157,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     f.data << "0 0.005\n30 0.005\n";
     left << "plot DATA index " << paper << " using 1:2 with points pt 6 ps 2 lc rgb 'gray50' title 'paper: 5e-2 (90), 6e-3 (20)', \\\n"
          << "     DATA index " << plateau << " using 1:2 with lines dt 3 lc rgb 'gray50' title 'paper: plateau ~5e-3'";
-    right << "set title 'force ratio at lambda nearest 1e-2' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
+    right << "set title 'force ratio at lambda = 1e-2 (log-log between the bracketing lambdas)' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
           << "set xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel '|F_zeta| / |F_mu|' noenhanced\n";
     bool any_ratio = false;
     std::ostringstream right_plots;
@@ -114,16 +173,14 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
       left << ", \\\n     DATA index " << fixed << " using 1:2:3 with yerrorlines " << style << " title "
            << gnuplot_string(family + ", plateaus 3/2, 1/2") << ", \\\n     DATA index " << free_block
            << " using 1:2:3 with yerrorlines dt 2 " << style.substr(0, style.find(" pt")) << " pt 4 title " << gnuplot_string(family + ", plateaus free");
-      const int ratio = f.begin_block(family + ": theta_w force_ratio force_ratio_err lambda runs");
+      const int ratio =
+          f.begin_block(family + ": theta_w force_ratio force_ratio_err lambda runs lambda_below lambda_above");
       for (const auto& [theta, g] : by_theta) {
-        auto decades_off = [](const Series* s) { return std::fabs(std::log10(s->lambda / kForceRatioLambda)); };
-        const Series* nearest = *std::min_element(g->finite.begin(), g->finite.end(),
-                                                  [&](const Series* a, const Series* b) { return decades_off(a) < decades_off(b); });
-        if (decades_off(nearest) > kForceRatioMaxDecades) continue;
-        const Ratio r = force_ratio(c.db, *nearest);
-        if (r.runs == 0) continue;
+        const auto r = ratio_at_paper_lambda(c.db, *g);
+        if (!r) continue;
         any_ratio = true;
-        f.data << num(theta) << " " << num(r.mean) << " " << num(r.err) << " " << num(r.lambda) << " " << r.runs << "\n";
+        f.data << num(theta) << " " << num(r->mean) << " " << num(r->err) << " " << num(r->lambda) << " " << r->runs
+               << " " << num(r->lambda_below) << " " << num(r->lambda_above) << "\n";
       }
       right_plots << (right_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << ratio
                   << " using 1:2:3 with yerrorlines " << style << " title " << gnuplot_string(family);
@@ -133,7 +190,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     if (any_ratio)
       body << right.str() << right_plots.str() << "\n";
     else
-      body << "set title 'no flowing run with friction at lambda within half a decade of 1e-2' noenhanced font ',9'\n"
+      body << "set title 'no flowing runs with friction bracketing lambda = 1e-2 within a decade, or within half a decade of it' noenhanced font ',9'\n"
            << "unset logscale y\nset yrange [0:1]\nplot -1 notitle\n";
     body << "unset multiplot";
     f.body = body.str();

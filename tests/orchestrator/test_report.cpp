@@ -2,10 +2,13 @@
 // its data and script; index.html references each; the fits recover the fixture's parameters.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <utility>
 
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/db/migrations.h"
@@ -159,6 +162,53 @@ TEST(Report, LambdaCVersusThetaKeepsGroupsThatDifferInMoreThanTheAngleApart) {
   const std::string& stiff = blocks[soft_first ? 1 : 0];
   for (const char* row : {"\n90 0.05", "\n60 0.0125"}) EXPECT_NE(soft.find(row), std::string::npos) << row << " in\n" << theta;
   for (const char* row : {"\n90 0.1", "\n60 0.025"}) EXPECT_NE(stiff.find(row), std::string::npos) << row << " in\n" << theta;
+  fs::remove_all(dir);
+}
+
+TEST(Report, ForceRatioIsReadAtThePapersLambdaForEveryAngle) {
+  // no series at lambda = 1e-2: the nearest are 3e-3 and 2e-2 (0.52 and 0.30 decades away);
+  // the ratio is 10 lambda at 90 deg and 20 lambda at 60 (its mean over the widths), so at
+  // 1e-2 it is 0.1 and 0.2, where the nearest series alone would give 0.2 and 0.4
+  const json sweep = {{"name", "ratios"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"theta_w_deg", {90, 60}}},
+                                              {{"lambda", {0, "inf", 1e-3, 3e-3, 2e-2, 0.1, 1, 10}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double zeta = j["zeta"], mu = j["mu"], w = j["w"];
+    const double lambda = mu > 0 ? zeta / mu : INFINITY;
+    const bool steep = j["theta_w_left_deg"].get<double>() == 60;
+    const double beta = std::isinf(lambda) ? 0.5 : (lambda == 0 ? 1.5 : crossover_model(2, lambda, 0.05, 0.8));
+    const double Q = beverloo_model(w, 0.4, 1.0, beta);
+    // +-2 % across the widths, mean exactly (steep ? 20 : 10) lambda: a nonzero standard error
+    const double ratio = (steep ? 20 : 10) * lambda * (1 + 0.01 * (w - 6));
+    return converged_summary(Q, 0.02 * Q, std::isfinite(ratio) ? ratio : 0.5);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  const std::size_t block = theta.find("theta_w force_ratio force_ratio_err lambda runs lambda_below lambda_above");
+  ASSERT_NE(block, std::string::npos) << theta;
+  std::istringstream rows(theta.substr(theta.find('\n', block) + 1));
+  std::map<double, std::array<double, 6>> by_theta;
+  for (std::string line; std::getline(rows, line) && !line.empty();) {
+    std::istringstream in(line);
+    double angle;
+    std::array<double, 6> v{};
+    in >> angle >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5];
+    by_theta[angle] = v;
+  }
+  ASSERT_EQ(by_theta.size(), 2u) << theta;
+  for (const auto& [angle, expected] : {std::pair{90.0, 0.1}, std::pair{60.0, 0.2}}) {
+    const auto& v = by_theta.at(angle);
+    EXPECT_NEAR(v[0], expected, 1e-9 * expected) << angle << " deg in\n" << theta;
+    // each series' relative standard error is 0.0071; the interpolation's lies below it
+    EXPECT_GT(v[1], 0.0) << angle;
+    EXPECT_LT(v[1] / v[0], 0.0071) << angle;
+    EXPECT_DOUBLE_EQ(v[2], 1e-2);
+    EXPECT_EQ(v[3], 10) << "the runs of both bracketing series";
+    EXPECT_DOUBLE_EQ(v[4], 3e-3);
+    EXPECT_DOUBLE_EQ(v[5], 2e-2);
+  }
   fs::remove_all(dir);
 }
 

@@ -201,6 +201,55 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   }
 }
 
+/// Fig. 6: lambda_c falls as theta_w falls ("from 5e-2 at 90 deg to 6e-3 at 20"), checked as
+/// lambda_c(theta_w) / lambda_c(90) of the groups that differ only in the hopper angle
+/// (Crossover::angle_family), with each crossover fit. The claim is a direction, so the verdict
+/// is one: a fall when the ratio lies below 1 by more than kClaimAgreeSigmas sigma (sigma of
+/// log10 of the ratio, from both lambda_c), a rise when above it by as much, and neither is
+/// claimed when the ratio is within that of 1.
+void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  std::map<std::string, std::map<double, const Crossover*>> families;  // family -> theta_w -> group
+  for (const Crossover& g : fits.crossovers) {
+    if (g.finite.empty()) continue;
+    const Series& s = *g.finite.front();
+    if (s.theta_left == s.theta_right) families[g.angle_family].emplace(s.theta_left, &g);
+  }
+  for (const auto& [family, by_theta] : families) {
+    const auto right = by_theta.find(90.0);
+    if (right == by_theta.end()) continue;
+    for (const auto& [theta, g] : by_theta) {
+      if (theta >= 90) continue;
+      for (const bool free : {false, true}) {
+        const std::optional<CrossoverFit>& at = free ? g->fit_free : g->fit;
+        const std::optional<CrossoverFit>& at_90 = free ? right->second->fit_free : right->second->fit;
+        if (!at || !at_90 || !(at->lambda_c > 0) || !(at_90->lambda_c > 0)) continue;
+        ClaimCheck c;
+        c.claim = std::string("lambda_c falls as theta_w falls (Fig. 6), ") +
+                  (free ? "the sigmoid with free plateaus" : "the paper's sigmoid") + ": lambda_c(theta_w) / lambda_c(90)";
+        c.subject = g->label + " at theta_w = " + format_value(theta, 3);
+        c.paper = theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
+        const double log_ratio = at->log10_lambda_c - at_90->log10_lambda_c;
+        const double log_sigma = std::hypot(at->log10_lambda_c_err, at_90->log10_lambda_c_err);
+        c.measured = std::pow(10.0, log_ratio);
+        c.sigma = c.measured * std::log(10.0) * log_sigma;
+        c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (" +
+                          format_with_error(at->lambda_c, at->lambda_c_err, " +- ") + " against " +
+                          format_with_error(at_90->lambda_c, at_90->lambda_c_err, " +- ") + ")";
+        if (!(log_sigma > 0)) {
+          c.verdict = "not judged: no error";
+        } else {
+          const double z = -log_ratio / log_sigma;  // > 0: a fall
+          c.judged = std::fabs(z) > kClaimAgreeSigmas;
+          c.agrees = z > kClaimAgreeSigmas;
+          c.verdict = c.judged ? std::string(c.agrees ? "agrees (falls" : "differs (rises") + ", z = " + z_text(std::fabs(z)) + ")"
+                               : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
+        }
+        out.push_back(c);
+      }
+    }
+  }
+}
+
 /// The experiments (oil droplets, Fig. 8): beta ~ 0.49 and k ~ 1.5, on measured series.
 void experiment_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   for (const Series& s : fits.series) {
@@ -324,6 +373,7 @@ std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
     limit_independence(fits, false, d, out);
   }
   crossover_checks(fits, out);
+  theta_checks(fits, out);
   heatmap_k_checks(fits, HeatmapLimit{false}, out);
   heatmap_k_checks(fits, HeatmapLimit{true}, out);
   experiment_checks(fits, out);

@@ -3,14 +3,16 @@
 /// \brief The paper's quantitative claims that a campaign's own fits can test (docs/paper.md
 /// has every claim; this is the part a report can check by itself): the exponents in both
 /// dissipation limits (d - 1/2 with friction only, d - 3/2 with drag only, for SP and DP), that
-/// the exponent of a limit does not depend on the model or its stiffness, nor on N >= 800, lambda_c and the
-/// stretching exponent of beta(lambda), the ratio of the prefactors C of the two limits, the
-/// corners of Fig. 7b's and 7c's k maps (smooth DP in each limit, k with beta held), and the experiments'
-/// beta and k. Each check names the series or group it read, the paper's value,
-/// the measured one with its error (and the replicas' spread where there is one), and a verdict
-/// by one stated rule. The paper's values carry no errors ("~" in its text), so the rule uses the
-/// measurement's: agree when |measured - paper| <= 2 sigma, sigma the larger of the fit's error
-/// and the replicas' spread. Nothing is rescaled and no fit is made here.
+/// the exponent of a limit does not depend on the model or its stiffness, nor on N >= 800,
+/// lambda_c and the stretching exponent of beta(lambda), the fall of lambda_c with the hopper
+/// angle (Fig. 6), the ratio of the prefactors C of the two limits, the corners of Fig. 7b's and
+/// 7c's k maps (smooth DP in each limit, k with beta held), and the experiments' beta and k.
+/// Each check names the series or group it read, the paper's value, the measured one with its
+/// error (and the replicas' spread where there is one), and a verdict by one stated rule. The
+/// paper's values carry no errors ("~" in its text), so the rule uses the measurement's: agree
+/// when |measured - paper| <= 2 sigma, sigma the larger of the fit's error and the replicas'
+/// spread (a direction, such as lambda_c's fall, is claimed beyond 2 sigma). Nothing is
+/// rescaled and no fit is made here.
 #include <string>
 #include <vector>
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "reports/paper_claims.h"
 
@@ -172,6 +174,48 @@ TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
   EXPECT_NEAR(C->measured, 7.0, 1e-12);
   EXPECT_NEAR(C->sigma, 7.0 * std::hypot(0.1, 0.1), 1e-12);
   EXPECT_FALSE(C->agrees);  // (7 - 3) / 0.99 = 4.0
+}
+
+TEST(PaperClaims, LambdaCsFallWithTheAngleIsADirectionJudgedBeyondTwoSigma) {
+  CampaignFits fits;
+  // family A at 90, 60, 30 deg; family B at 90 and 60 (its lambda_c rises); C at 60 only
+  const std::vector<std::tuple<std::string, double, double, double>> groups = {
+      {"A", 90, 0.09, 0.05}, {"A", 60, 0.037, 0.08}, {"A", 30, 0.08, 0.10}, {"B", 90, 0.01, 0.05}, {"B", 60, 0.05, 0.05},
+      {"C", 60, 0.01, 0.05}};
+  fits.series.reserve(groups.size());
+  for (const auto& [family, theta, lambda_c, log10_err] : groups) {
+    Series s = series(family, 2, 0.05, 1.0, 0.05);
+    s.theta_left = s.theta_right = theta;
+    fits.series.push_back(s);
+    Crossover g;
+    g.label = family;
+    g.angle_family = family;
+    g.finite = {&fits.series.back()};
+    CrossoverFit f;
+    f.lambda_c = lambda_c, f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = log10_err;
+    f.lambda_c_err = lambda_c * std::log(10.0) * log10_err;
+    g.fit = f;
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const std::string claim = "lambda_c falls as theta_w falls (Fig. 6), the paper's sigmoid";
+  const ClaimCheck* a60 = find(checks, claim, "A at theta_w = 60");
+  ASSERT_NE(a60, nullptr);
+  EXPECT_NEAR(a60->measured, 0.037 / 0.09, 1e-12);
+  EXPECT_TRUE(a60->judged);
+  EXPECT_TRUE(a60->agrees);  // log10(0.09 / 0.037) = 0.386 over 0.094: z = 4.1
+  EXPECT_EQ(a60->verdict, "agrees (falls, z = 4.1)");
+  const ClaimCheck* a30 = find(checks, claim, "A at theta_w = 30");
+  ASSERT_NE(a30, nullptr);
+  EXPECT_FALSE(a30->judged) << a30->verdict;  // 0.051 over 0.112: z = 0.5
+  EXPECT_EQ(a30->verdict.rfind("not resolved", 0), 0u) << a30->verdict;
+  const ClaimCheck* b60 = find(checks, claim, "B at theta_w = 60");
+  ASSERT_NE(b60, nullptr);
+  EXPECT_TRUE(b60->judged);
+  EXPECT_FALSE(b60->agrees);  // a fivefold rise: 0.70 over 0.071, z = 9.9
+  EXPECT_EQ(b60->verdict.rfind("differs (rises", 0), 0u) << b60->verdict;
+  EXPECT_EQ(find(checks, claim, "C at theta_w = 60"), nullptr) << "no group at 90 deg to compare with";
+  EXPECT_EQ(find(checks, "free plateaus: lambda_c(theta_w)", "A at theta_w = 60"), nullptr) << "no free fit";
 }
 
 TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {

@@ -144,27 +144,47 @@ TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
   fits.series.push_back(series("friction", 2, 0, 1.5, 0.05, /*C=*/0.5, 0.05));
   fits.series.push_back(series("drag", 2, INFINITY, 0.5, 0.05, /*C=*/3.5, 0.35));
   fits.series.push_back(series("mid", 2, 0.05, 1.0, 0.05));
+  fits.series.push_back(series("low", 2, 0.005, 1.4, 0.05));
+  fits.series.push_back(series("high", 2, 1, 0.6, 0.05));
   Crossover g;
   g.label = "2D group";
   g.dimension = 2;
-  g.finite = {&fits.series[2]};
+  g.finite = {&fits.series[3], &fits.series[2], &fits.series[4]};
   g.limit0 = &fits.series[0];
   g.limit_inf = &fits.series[1];
   CrossoverFit fixed;
-  fixed.lambda_c = 0.089, fixed.lambda_c_err = 0.005, fixed.b = 0.56, fixed.b_err = 0.05;
-  g.fit = fixed;
+  auto with_lambda_c = [](CrossoverFit f, double lambda_c, double lambda_c_err) {
+    f.lambda_c = lambda_c, f.lambda_c_err = lambda_c_err;
+    f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = lambda_c_err / (lambda_c * std::log(10.0));
+    return f;
+  };
+  fixed.b = 0.56, fixed.b_err = 0.05;
+  g.fit = with_lambda_c(fixed, 0.089, 0.005);
   CrossoverFit free_plateaus;
-  free_plateaus.lambda_c = 0.06, free_plateaus.lambda_c_err = 0.006, free_plateaus.b = 0.96, free_plateaus.b_err = 0.07;
-  g.fit_free = free_plateaus;
+  free_plateaus.b = 0.96, free_plateaus.b_err = 0.07;
+  g.fit_free = with_lambda_c(free_plateaus, 0.06, 0.006);
   fits.crossovers.push_back(g);
+  // a midpoint beyond the measured lambdas (0.005 .. 1): the sigmoid extrapolated, no verdict,
+  // where a linear z would have said "agrees" (|15 - 0.05| / 8 = 1.9)
+  Crossover beyond = g;
+  beyond.label = "2D group beyond";
+  beyond.fit = with_lambda_c(fixed, 15, 8);
+  beyond.fit->chi2_red = 8.8;
+  beyond.fit_free.reset();
+  fits.crossovers.push_back(beyond);
   const auto checks = check_paper_claims(fits);
   const ClaimCheck* lc = find(checks, "the paper's sigmoid", "2D group");
   ASSERT_NE(lc, nullptr);
   EXPECT_EQ(lc->paper, "~0.05 (2D, theta_w = 90)");
-  EXPECT_EQ(lc->verdict, "differs (z = 7.8)");
+  // in log10 lambda_c: 0.2504 over 0.0244
+  EXPECT_EQ(lc->verdict, "differs (z = 10.3 in log10 lambda_c)");
   const ClaimCheck* lf = find(checks, "free plateaus", "2D group");
   ASSERT_NE(lf, nullptr);
-  EXPECT_TRUE(lf->agrees);  // 0.01 / 0.006
+  EXPECT_TRUE(lf->agrees);  // 0.0792 over 0.0434: z = 1.8
+  const ClaimCheck* out_of_range = find(checks, "the paper's sigmoid", "2D group beyond");
+  ASSERT_NE(out_of_range, nullptr);
+  EXPECT_FALSE(out_of_range->judged);
+  EXPECT_EQ(out_of_range->verdict.rfind("not judged: lambda_c outside the measured lambdas", 0), 0u) << out_of_range->verdict;
   const ClaimCheck* b = find(checks, "stretching exponent", "2D group");
   ASSERT_NE(b, nullptr);
   EXPECT_NEAR(b->measured, 1 / 0.56, 1e-12);  // 1.79 +- 0.16: 4.9 sigma above 1

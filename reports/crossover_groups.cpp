@@ -132,4 +132,15 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
   return out;
 }
 
+std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,
+                                                                         bool fitted_only) {
+  std::map<std::string, std::map<double, const Crossover*>> families;
+  for (const Crossover& g : crossovers) {
+    if (g.finite.empty() || (fitted_only && !g.fit && !g.fit_free)) continue;
+    const Series& s = *g.finite.front();
+    if (s.theta_left == s.theta_right) families[g.angle_family].emplace(s.theta_left, &g);
+  }
+  return families;
+}
+
 }  // namespace beverloo

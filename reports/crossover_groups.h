@@ -19,4 +19,10 @@ namespace beverloo {
 std::vector<Crossover> crossover_groups(const std::vector<Series>& series,
                                         const std::map<std::string, nlohmann::json>& base_job_of);
 
+/// Fig. 6's families: the groups with a symmetric hopper angle that differ only in it
+/// (Crossover::angle_family -> theta_w -> the family's group at that angle, the first if two).
+/// fitted_only: only groups with a crossover fit, with fixed or free plateaus.
+std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,
+                                                                         bool fitted_only);
+
 }  // namespace beverloo

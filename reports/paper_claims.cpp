@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/text_escape.h"
+#include "reports/crossover_groups.h"
 #include "reports/number_format.h"
 
 namespace beverloo {
@@ -231,13 +232,7 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
 /// log10 of the ratio, from both lambda_c), a rise when above it by as much, and neither is
 /// claimed when the ratio is within that of 1.
 void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
-  std::map<std::string, std::map<double, const Crossover*>> families;  // family -> theta_w -> group
-  for (const Crossover& g : fits.crossovers) {
-    if (g.finite.empty()) continue;
-    const Series& s = *g.finite.front();
-    if (s.theta_left == s.theta_right) families[g.angle_family].emplace(s.theta_left, &g);
-  }
-  for (const auto& [family, by_theta] : families) {
+  for (const auto& [family, by_theta] : angle_families(fits.crossovers, /*fitted_only=*/false)) {
     const auto right = by_theta.find(90.0);
     if (right == by_theta.end()) continue;
     for (const auto& [theta, g] : by_theta) {

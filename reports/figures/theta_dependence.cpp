@@ -13,6 +13,7 @@
 
 #include "core/text_escape.h"
 #include "figure.h"
+#include "reports/crossover_groups.h"
 #include "reports/series_fits.h"
 
 namespace beverloo::figures {
@@ -129,14 +130,8 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     std::map<double, const Crossover*> by_theta;
   };
   std::map<std::string, Family> by_key;
-  for (const Crossover& g : c.fits.crossovers) {
-    if (g.finite.empty() || (!g.fit && !g.fit_free)) continue;
-    const Series& s = *g.finite.front();
-    if (s.theta_left != s.theta_right) continue;
-    Family& family = by_key[g.angle_family];
-    family.name = family_name(s);
-    family.by_theta.emplace(s.theta_left, &g);
-  }
+  for (auto& [key, by_theta] : angle_families(c.fits.crossovers, /*fitted_only=*/true))
+    by_key[key] = Family{family_name(*by_theta.begin()->second->finite.front()), std::move(by_theta)};
   // by name (a stable order for the figure), a name shared by families made unique by their key
   std::map<std::string, int> name_uses;
   for (const auto& [key, family] : by_key)

@@ -199,6 +199,9 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       "UPDATE crossover_fit_results SET free_lambda_c = ?2, free_lambda_c_err = ?3, free_b = ?4, free_b_err = ?5, "
       "free_beta_lambda0 = ?6, free_beta_lambda0_err = ?7, free_beta_inf = ?8, free_beta_inf_err = ?9, free_chi2_red = ?10, "
       "free_message = ?11 WHERE group_key = ?1");
+  db::Statement sp = db.prepare(
+      "UPDATE crossover_fit_results SET replica_fits = ?2, log10_lambda_c_replica_spread = ?3, b_replica_spread = ?4, "
+      "free_replica_fits = ?5, free_log10_lambda_c_replica_spread = ?6, free_b_replica_spread = ?7 WHERE group_key = ?1");
   for (const Crossover& g : fits.crossovers) {
     cx.bind(1, g.key).bind(2, g.label).bind(3, g.dimension).bind(4, static_cast<int>(g.finite.size()));
     if (g.fit)
@@ -223,6 +226,13 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       fr.bind(11, g.message_free);
     }
     fr.run();
+    sp.bind(1, g.key);
+    for (auto [col, spread] : {std::pair{2, &g.spread}, std::pair{5, &g.spread_free}}) {
+      sp.bind(col, spread->replicas);
+      for (auto [c, v] : {std::pair{col + 1, spread->log10_lambda_c}, std::pair{col + 2, spread->b}})
+        if (std::isnan(v)) sp.bind_null(c); else sp.bind(c, v);
+    }
+    sp.run();
   }
   tx.commit();
 }
@@ -322,7 +332,9 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
         << " |\n";
   }
   fcsv << "label,points,lambda_c,lambda_c_err,b,b_err,chi2_red,free_lambda_c,free_lambda_c_err,free_b,free_b_err,"
-          "free_beta_lambda0,free_beta_lambda0_err,free_beta_inf,free_beta_inf_err,free_chi2_red,free_message\n";
+          "free_beta_lambda0,free_beta_lambda0_err,free_beta_inf,free_beta_inf_err,free_chi2_red,free_message,"
+          "replica_fits,log10_lambda_c_replica_spread,b_replica_spread,free_replica_fits,"
+          "free_log10_lambda_c_replica_spread,free_b_replica_spread\n";
   fmd << "| group | lambda_c (plateaus 1/2, 3/2 from d) | chi2_red | lambda_c (plateaus free) | b | beta(0) fitted | "
          "beta(inf) fitted | chi2_red | beta(0), beta(inf) measured |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Crossover& g : fits.crossovers) {
@@ -336,18 +348,29 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
       const CrossoverFit& f = *g.fit_free;
       fcsv << fmt(f.lambda_c, 8) << ',' << fmt(f.lambda_c_err, 4) << ',' << fmt(f.b, 8) << ',' << fmt(f.b_err, 4) << ','
            << fmt(f.beta_0, 8) << ',' << fmt(f.beta_0_err, 4) << ',' << fmt(f.beta_inf, 8) << ',' << fmt(f.beta_inf_err, 4)
-           << ',' << fmt(f.chi2_red, 4) << ",\n";
+           << ',' << fmt(f.chi2_red, 4) << ",";
     } else {
-      fcsv << ",,,,,,,,," << csv_field(g.message_free) << "\n";
+      fcsv << ",,,,,,,,," << csv_field(g.message_free);
     }
+    for (const Crossover::ReplicaSpread* r : {&g.spread, &g.spread_free})
+      fcsv << ',' << r->replicas << ',' << fmt(r->log10_lambda_c, 4) << ',' << fmt(r->b, 4);
+    fcsv << "\n";
+    // lambda_c with its spread over replicas in decades (log10), where there is one
+    auto spread_text = [](const Crossover::ReplicaSpread& r) {
+      return std::isnan(r.log10_lambda_c) ? std::string()
+                                          : " (spread " + fmt(r.log10_lambda_c, 2) + " in log10, " +
+                                                std::to_string(r.replicas) + " replicas)";
+    };
     auto measured = [](const Series* s) { return s && s->fit ? fmt(s->fit->beta) + " ± " + fmt(s->fit->beta_err, 2) : std::string("-"); };
     fmd << "| " << markdown_cell(g.label) << " | "
-        << (g.fit ? fmt(g.fit->lambda_c) + " ± " + fmt(g.fit->lambda_c_err, 2) + " | " + fmt(g.fit->chi2_red, 3)
+        << (g.fit ? fmt(g.fit->lambda_c) + " ± " + fmt(g.fit->lambda_c_err, 2) + spread_text(g.spread) + " | " +
+                        fmt(g.fit->chi2_red, 3)
                   : "no fit: " + markdown_cell(g.message) + " | ")
         << " | ";
     if (g.fit_free) {
       const CrossoverFit& f = *g.fit_free;
-      fmd << fmt(f.lambda_c) << " ± " << fmt(f.lambda_c_err, 2) << " | " << fmt(f.b) << " ± " << fmt(f.b_err, 2) << " | "
+      fmd << fmt(f.lambda_c) << " ± " << fmt(f.lambda_c_err, 2) << spread_text(g.spread_free) << " | " << fmt(f.b) << " ± "
+          << fmt(f.b_err, 2) << " | "
           << fmt(f.beta_0) << " ± " << fmt(f.beta_0_err, 2) << " | " << fmt(f.beta_inf) << " ± " << fmt(f.beta_inf_err, 2)
           << " | " << fmt(f.chi2_red, 3);
     } else {

@@ -5,6 +5,7 @@
 /// Beverloo fit per series, and one crossover fit per group of series that differ only in
 /// lambda = zeta/mu (same other parameters and the same drag scale for finite lambda).
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,6 +70,9 @@ struct Series {
   /// Fig. 7 maps; its spread over seeds is what a difference between two cells is judged by).
   int replica_fits = 0;
   double beta_replica_spread = NAN, k_replica_spread = NAN;
+  /// Those replicas' own free fits (replica -> fit): what a crossover's run-to-run spread is
+  /// fitted from (Crossover::spread).
+  std::map<int, BeverlooFit> replica_fit;
   double k_at_beta_lo_replica_spread = NAN, k_at_beta_hi_replica_spread = NAN;
   /// Clogging as a result: per w, the time to a clog over the replicas (Kaplan-Meier, runs that
   /// ended flowing censored at their end); every w of a series in which some run clogged.
@@ -111,6 +115,16 @@ struct Crossover {
   /// beta(lambda) with its plateaus free (fit_crossover_free_plateaus), beside the paper's fixed ones
   std::optional<CrossoverFit> fit_free;
   std::string message_free;
+  /// The run-to-run spread of a crossover fit: the sigmoid fitted again to each replica's own
+  /// exponents (the replicas with a free fit in every finite-lambda series of the group, the
+  /// pooled fit's lambdas and no others), the sample standard deviation of log10 lambda_c and
+  /// of b over those fits (NaN below two). The pooled fit's error says how well one set of
+  /// exponents fixes lambda_c; this says how far another seed's set moves it.
+  struct ReplicaSpread {
+    int replicas = 0;  ///< replicas whose own crossover fit succeeded
+    double log10_lambda_c = NAN, b = NAN;
+  };
+  ReplicaSpread spread, spread_free;  ///< of fit (the paper's plateaus) and of fit_free
 };
 
 struct CampaignFits {

@@ -5,12 +5,54 @@
 
 #include "core/digest.h"
 #include "engine/parameters.h"
+#include "series_fits.h"
 #include "series_labels.h"
 
 namespace beverloo {
 namespace {
 using nlohmann::json;
 std::string fmt(double v, int digits = 4) { return table_number(v, digits); }
+
+/// " theta=60/60" for a hopper that is not flat-bottomed, as in the series' labels: the groups
+/// of Fig. 6 differ only in it, and label disambiguation cannot see it (the base jobs it
+/// compares are angle-free).
+std::string angle_text(const Series& s) {
+  return s.theta_left != 90 || s.theta_right != 90 ? " theta=" + fmt(s.theta_left) + "/" + fmt(s.theta_right) : "";
+}
+
+/// The crossover's run-to-run spread (Crossover::spread): each replica that has its own free
+/// fit in every finite-lambda series is fitted alone, both ways, over the same lambdas.
+void replica_spread(Crossover& g, const std::vector<double>& lambda) {
+  if (g.finite.empty()) return;
+  std::set<int> replicas;
+  for (const auto& [replica, fit] : g.finite.front()->replica_fit) replicas.insert(replica);
+  for (const Series* s : g.finite)
+    for (auto it = replicas.begin(); it != replicas.end();)
+      it = s->replica_fit.count(*it) ? std::next(it) : replicas.erase(it);
+  if (replicas.size() < 2) return;
+  std::vector<double> log_lc, b, log_lc_free, b_free;
+  for (int replica : replicas) {
+    std::vector<double> beta, beta_err;
+    for (const Series* s : g.finite) {
+      beta.push_back(s->replica_fit.at(replica).beta);
+      beta_err.push_back(s->replica_fit.at(replica).beta_err);
+    }
+    try {
+      const CrossoverFit f = fit_crossover(g.dimension, lambda, beta, beta_err);
+      log_lc.push_back(f.log10_lambda_c);
+      b.push_back(f.b);
+    } catch (const FitError&) {
+    }
+    try {
+      const CrossoverFit f = fit_crossover_free_plateaus(lambda, beta, beta_err);
+      log_lc_free.push_back(f.log10_lambda_c);
+      b_free.push_back(f.b);
+    } catch (const FitError&) {
+    }
+  }
+  g.spread = {static_cast<int>(log_lc.size()), sample_sd(log_lc), sample_sd(b)};
+  g.spread_free = {static_cast<int>(log_lc_free.size()), sample_sd(log_lc_free), sample_sd(b_free)};
+}
 
 /// Sorts a crossover group's finite-lambda series and fits the sigmoid to their beta.
 void fit_group(Crossover& g) {
@@ -31,6 +73,7 @@ void fit_group(Crossover& g) {
   } catch (const FitError& err) {
     g.message_free = err.what();
   }
+  replica_spread(g, l);
 }
 }  // namespace
 
@@ -47,7 +90,8 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
     g.key = sha256_hex(gkey);
     g.angle_family = sha256_hex(s.angle_free_key + gkey.substr(gkey.find('|')));
     g.dimension = s.dimension;
-    g.label = std::to_string(s.dimension) + "D " + s.stiffness + " zeta=" + fmt(s.zeta, 3) + " N=" + std::to_string(s.N);
+    g.label = std::to_string(s.dimension) + "D " + s.stiffness + " zeta=" + fmt(s.zeta, 3) + angle_text(s) + " N=" +
+              std::to_string(s.N);
     if (std::isinf(s.lambda))
       g.limit_inf = &s;
     else if (s.fit)
@@ -115,7 +159,7 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
               (frictions.size() == 1   ? " mu=" + fmt(*frictions.begin(), 4) + " (drag rate)"
                : drags.size() == 1     ? " drag_rate=" + fmt(*drags.begin(), 4) + " (mu varied)"
                                        : std::string(" (drag rate and mu varied)")) +
-              (any ? " N=" + std::to_string(any->N) : std::string());
+              (any ? angle_text(*any) + " N=" + std::to_string(any->N) : std::string());
     fit_group(g);
     out.push_back(g);
   }

@@ -99,15 +99,21 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
        << "<table><tr><th>group</th><th>points</th><th>lambda_c</th><th>b</th><th>chi2_red</th>"
        << "<th>lambda_c, plateaus free</th><th>b</th><th>beta(0), beta(inf) fitted</th><th>chi2_red</th>"
        << "<th>beta(lambda=0)</th><th>beta(lambda=inf)</th></tr>\n";
+  // lambda_c's run-to-run spread (in decades) where replicas give one
+  auto spread = [](const Crossover::ReplicaSpread& r) {
+    return std::isnan(r.log10_lambda_c) ? std::string()
+                                        : "<br><small>spread " + format_value(r.log10_lambda_c, 2) + " in log10 over " +
+                                              std::to_string(r.replicas) + " replicas</small>";
+  };
   for (const Crossover& g : fits.crossovers) {
     html << "<tr><td>" << html_escape(g.label) << "</td><td>" << g.finite.size() << "</td>";
     if (g.fit)
-      html << "<td>" << pm(g.fit->lambda_c, g.fit->lambda_c_err) << "</td><td>" << pm(g.fit->b, g.fit->b_err) << "</td><td>"
+      html << "<td>" << pm(g.fit->lambda_c, g.fit->lambda_c_err) << spread(g.spread) << "</td><td>" << pm(g.fit->b, g.fit->b_err) << "</td><td>"
            << format_value(g.fit->chi2_red, 2) << "</td>";
     else
       html << "<td colspan=3>no fit: " << html_escape(g.message) << "</td>";
     if (g.fit_free)
-      html << "<td>" << pm(g.fit_free->lambda_c, g.fit_free->lambda_c_err) << "</td><td>" << pm(g.fit_free->b, g.fit_free->b_err)
+      html << "<td>" << pm(g.fit_free->lambda_c, g.fit_free->lambda_c_err) << spread(g.spread_free) << "</td><td>" << pm(g.fit_free->b, g.fit_free->b_err)
            << "</td><td>" << pm(g.fit_free->beta_0, g.fit_free->beta_0_err) << ", "
            << pm(g.fit_free->beta_inf, g.fit_free->beta_inf_err) << "</td><td>" << format_value(g.fit_free->chi2_red, 2) << "</td>";
     else

@@ -143,12 +143,25 @@ bool paper_lambda_c(const Crossover& g, double& value, std::string& text) {
   return true;
 }
 
+/// The sigma of log10 lambda_c for a verdict: the larger of the fit's error and the spread over
+/// replicas (the fit's error alone without replicas), as beta_sigma is for an exponent.
+double log10_lambda_c_sigma(const CrossoverFit& f, const Crossover::ReplicaSpread& spread) {
+  return std::isnan(spread.log10_lambda_c) ? f.log10_lambda_c_err : std::max(f.log10_lambda_c_err, spread.log10_lambda_c);
+}
+
+/// ", spread 0.12 in log10 over 3 replicas", or "" without replicas.
+std::string lambda_c_spread_text(const Crossover::ReplicaSpread& spread) {
+  return std::isnan(spread.log10_lambda_c) ? std::string()
+                                           : ", spread " + format_value(spread.log10_lambda_c, 2) + " in log10 over " +
+                                                 std::to_string(spread.replicas) + " replicas";
+}
+
 /// lambda_c against the paper's value on the scale it is fitted and drawn on (log10 lambda_c,
 /// with its own error): a linear z would call a lambda_c of 15 +- 8 "2 sigma from 0.07". A
 /// midpoint outside the group's measured lambdas is an extrapolation of the sigmoid (with the
 /// paper's fixed plateaus it goes there when the data never cross d - 1, e.g. 3D flows whose
 /// exponents all lie above 2): no verdict.
-void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, double paper_value) {
+void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, double log10_sigma, double paper_value) {
   double lo = INFINITY, hi = 0;
   for (const Series* s : g.finite) lo = std::min(lo, s->lambda), hi = std::max(hi, s->lambda);
   if (!(fit.lambda_c >= lo && fit.lambda_c <= hi)) {
@@ -156,11 +169,11 @@ void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, 
                 "), an extrapolation (chi2_red " + format_value(fit.chi2_red, 2) + ")";
     return;
   }
-  if (!(fit.log10_lambda_c_err > 0)) {
+  if (!(log10_sigma > 0)) {
     c.verdict = "not judged: no error";
     return;
   }
-  const double z = std::fabs(fit.log10_lambda_c - std::log10(paper_value)) / fit.log10_lambda_c_err;
+  const double z = std::fabs(fit.log10_lambda_c - std::log10(paper_value)) / log10_sigma;
   c.judged = true;
   c.agrees = z <= kClaimAgreeSigmas;
   c.verdict = std::string(c.agrees ? "agrees" : "differs") + " (z = " + z_text(z) + " in log10 lambda_c)";
@@ -179,9 +192,11 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       c.subject = g.label;
       c.paper = text;
       c.measured = (*f)->lambda_c;
-      c.sigma = (*f)->lambda_c_err;
-      c.measured_text = format_with_error((*f)->lambda_c, (*f)->lambda_c_err, " +- ");
-      judge_lambda_c(c, **f, g, value);
+      const Crossover::ReplicaSpread& spread = f == &g.fit ? g.spread : g.spread_free;
+      c.measured_text = format_with_error((*f)->lambda_c, (*f)->lambda_c_err, " +- ") + lambda_c_spread_text(spread);
+      const double log10_sigma = log10_lambda_c_sigma(**f, spread);
+      c.sigma = (*f)->lambda_c * std::log(10.0) * log10_sigma;  // the verdict's sigma, on the linear scale
+      judge_lambda_c(c, **f, g, log10_sigma, value);
       out.push_back(c);
     }
     if (g.fit && g.fit->b > 0) {
@@ -247,12 +262,18 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         c.subject = g->label + " at theta_w = " + format_value(theta, 3);
         c.paper = theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
         const double log_ratio = at->log10_lambda_c - at_90->log10_lambda_c;
-        const double log_sigma = std::hypot(at->log10_lambda_c_err, at_90->log10_lambda_c_err);
+        const double log_sigma = std::hypot(log10_lambda_c_sigma(*at, free ? g->spread_free : g->spread),
+                                            log10_lambda_c_sigma(*at_90, free ? right->second->spread_free : right->second->spread));
         c.measured = std::pow(10.0, log_ratio);
         c.sigma = c.measured * std::log(10.0) * log_sigma;
         c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (" +
                           format_with_error(at->lambda_c, at->lambda_c_err, " +- ") + " against " +
                           format_with_error(at_90->lambda_c, at_90->lambda_c_err, " +- ") + ")";
+        const Crossover::ReplicaSpread &spread = free ? g->spread_free : g->spread,
+                                       &spread_90 = free ? right->second->spread_free : right->second->spread;
+        if (!std::isnan(spread.log10_lambda_c) || !std::isnan(spread_90.log10_lambda_c))
+          c.measured_text += "; spread of log10 lambda_c over replicas " + format_value(spread.log10_lambda_c, 2) + " and " +
+                             format_value(spread_90.log10_lambda_c, 2) + " at 90 deg";
         if (!(log_sigma > 0)) {
           c.verdict = "not judged: no error";
         } else {

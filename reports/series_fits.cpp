@@ -58,6 +58,7 @@ void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t w
       const BeverlooFit f = fit_beverloo(rw, rq, re);
       betas.push_back(f.beta);
       ks.push_back(f.k);
+      s.replica_fit[replica] = f;
     } catch (const FitError&) {
     }
     if (s.rate_is_c0()) continue;  // no authors' fits of a drain's c0 t0

@@ -172,7 +172,20 @@ TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
   beyond.fit->chi2_red = 8.8;
   beyond.fit_free.reset();
   fits.crossovers.push_back(beyond);
+  // the same fits with a run-to-run spread of log10 lambda_c larger than the fit's error
+  Crossover spread = g;
+  spread.label = "2D group with replicas";
+  spread.spread = {3, 0.15, 0.1};
+  spread.spread_free = {3, 0.01, 0.1};  // smaller than the fit's error: that stays the sigma
+  fits.crossovers.push_back(spread);
   const auto checks = check_paper_claims(fits);
+  const ClaimCheck* ls = find(checks, "the paper's sigmoid", "2D group with replicas");
+  ASSERT_NE(ls, nullptr);
+  EXPECT_EQ(ls->verdict, "agrees (z = 1.7 in log10 lambda_c)") << "0.2504 over the spread 0.15, not over 0.0244";
+  EXPECT_NE(ls->measured_text.find("spread 0.15 in log10 over 3 replicas"), std::string::npos) << ls->measured_text;
+  const ClaimCheck* lsf = find(checks, "free plateaus", "2D group with replicas");
+  ASSERT_NE(lsf, nullptr);
+  EXPECT_EQ(lsf->verdict, find(checks, "free plateaus", "2D group")->verdict);
   const ClaimCheck* lc = find(checks, "the paper's sigmoid", "2D group");
   ASSERT_NE(lc, nullptr);
   EXPECT_EQ(lc->paper, "~0.05 (2D, theta_w = 90)");

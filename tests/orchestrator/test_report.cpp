@@ -209,6 +209,10 @@ TEST(Report, ForceRatioIsReadAtThePapersLambdaForEveryAngle) {
     EXPECT_DOUBLE_EQ(v[4], 3e-3);
     EXPECT_DOUBLE_EQ(v[5], 2e-2);
   }
+  // the two angles' crossover groups are told apart in the tables by their angle
+  const std::string crossovers = read(out / "crossover_fits.md");
+  EXPECT_NE(crossovers.find("2D SP E_sp=100 zeta=0.316 theta=60/60 N=400 |"), std::string::npos) << crossovers;
+  EXPECT_NE(crossovers.find("2D SP E_sp=100 zeta=0.316 N=400 |"), std::string::npos) << crossovers;
   fs::remove_all(dir);
 }
 

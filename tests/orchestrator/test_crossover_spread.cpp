@@ -1,0 +1,92 @@
+// The run-to-run spread of a crossover beta(lambda) (reports/crossover_groups.h): the sigmoid
+// fitted again to each replica's own exponents, over the pooled fit's lambdas.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "reports/crossover_groups.h"
+#include "reports/series_fits.h"
+
+namespace beverloo {
+namespace {
+
+const std::vector<double> kLambdas = {0.003, 0.01, 0.03, 0.1, 0.3, 1};
+/// Each replica's own crossover: lambda_c = 0.03, 0.05, 0.08 with b = 0.8 and the paper's 2D
+/// plateaus, so every replica's exponents lie exactly on its own sigmoid.
+const double kLambdaC[] = {0.03, 0.05, 0.08};
+
+/// The text's lambda axis (zeta = 1, mu = 1 / lambda): one series per lambda, replicas 0-2 whose
+/// flow follows Q = 5 (w - 1.5)^beta_r(lambda) exactly (1 % errors) at w = 4..10.
+/// skip_replica: a replica left out of the series at lambda = 0.03 (-1: none).
+std::vector<Series> three_replica_group(int skip_replica) {
+  std::vector<Series> out;
+  for (double lambda : kLambdas) {
+    Series s;
+    s.dimension = 2, s.N = 1600, s.zeta = 1, s.mu = 1 / lambda, s.lambda = lambda;
+    s.key = "series lambda=" + std::to_string(lambda);
+    s.base_key = s.angle_free_key = "2D SP";
+    std::vector<RunRecord> runs;
+    for (int r = 0; r < 3; ++r) {
+      if (r == skip_replica && lambda == 0.03) continue;
+      const double beta = crossover_model(2, lambda, kLambdaC[r], 0.8);
+      for (double w = 4; w <= 10; w += 1) {
+        RunRecord run;
+        run.w = w, run.replica = r;
+        run.Q = 5 * std::pow(w - 1.5, beta);
+        run.Q_err = 0.01 * run.Q;
+        runs.push_back(run);
+      }
+    }
+    fit_series(s, runs);
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::map<std::string, nlohmann::json> base_jobs(const std::vector<Series>& series) {
+  std::map<std::string, nlohmann::json> out;
+  for (const Series& s : series) out[s.key] = nlohmann::json::object();
+  return out;
+}
+
+double sample_sd_of_log10(std::vector<double> v) {
+  for (double& x : v) x = std::log10(x);
+  return sample_sd(v);
+}
+
+TEST(CrossoverSpread, EachReplicasOwnSigmoidGivesTheSpreadOfLog10LambdaC) {
+  const std::vector<Series> series = three_replica_group(-1);
+  const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(groups.size(), 1u);
+  const Crossover& g = groups.front();
+  ASSERT_TRUE(g.fit);
+  EXPECT_EQ(g.spread.replicas, 3);
+  const double expected = sample_sd_of_log10({0.03, 0.05, 0.08});  // 0.213 decades
+  EXPECT_NEAR(g.spread.log10_lambda_c, expected, 1e-3);
+  EXPECT_NEAR(g.spread.b, 0, 1e-3);  // every replica has b = 0.8
+  EXPECT_EQ(g.spread_free.replicas, 3);
+  EXPECT_NEAR(g.spread_free.log10_lambda_c, expected, 1e-2);
+  // the pooled fit's own error knows nothing of this: it is far smaller than the spread
+  EXPECT_LT(g.fit->log10_lambda_c_err, expected / 3);
+}
+
+TEST(CrossoverSpread, AReplicaMissingFromOneLambdaIsLeftOutAndOneReplicaGivesNone) {
+  const std::vector<Series> series = three_replica_group(2);
+  const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups.front().spread.replicas, 2);
+  EXPECT_NEAR(groups.front().spread.log10_lambda_c, sample_sd_of_log10({0.03, 0.05}), 1e-3);
+
+  std::vector<Series> lone = three_replica_group(-1);
+  for (Series& s : lone) s.replica_fit.erase(1), s.replica_fit.erase(2);
+  const std::vector<Crossover> lone_groups = crossover_groups(lone, base_jobs(lone));
+  ASSERT_EQ(lone_groups.size(), 1u);
+  EXPECT_TRUE(std::isnan(lone_groups.front().spread.log10_lambda_c));
+  EXPECT_EQ(lone_groups.front().spread.replicas, 0);
+}
+
+}  // namespace
+}  // namespace beverloo

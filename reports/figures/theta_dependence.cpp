@@ -159,15 +159,25 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     int k = 0;
     for (const auto& [family, by_theta] : families) {
       const std::string style = series_style(k++, static_cast<int>(families.size()));
-      const int fixed = f.begin_block(family + ": theta_w lambda_c lambda_c_err (the paper's fixed plateaus)");
+      // the bars: lambda_c times and over 10^sigma, sigma the larger of the fit's error of
+      // log10 lambda_c and its spread over the replicas' own fits (as the claims table judges it)
+      auto row = [&](double theta, const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
+        const double sigma = std::isnan(spread.log10_lambda_c) ? fit.log10_lambda_c_err
+                                                               : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
+        f.data << num(theta) << " " << num(fit.lambda_c) << " " << num(fit.lambda_c_err) << " "
+               << num(spread.log10_lambda_c) << " " << num(fit.lambda_c * std::pow(10.0, -sigma)) << " "
+               << num(fit.lambda_c * std::pow(10.0, sigma)) << "\n";
+      };
+      const std::string columns = ": theta_w lambda_c lambda_c_err log10_lambda_c_replica_spread bar_low bar_high";
+      const int fixed = f.begin_block(family + columns + " (the paper's fixed plateaus)");
       for (const auto& [theta, g] : by_theta)
-        if (g->fit) f.data << num(theta) << " " << num(g->fit->lambda_c) << " " << num(g->fit->lambda_c_err) << "\n";
-      const int free_block = f.begin_block(family + ": theta_w lambda_c lambda_c_err (plateaus free)");
+        if (g->fit) row(theta, *g->fit, g->spread);
+      const int free_block = f.begin_block(family + columns + " (plateaus free)");
       for (const auto& [theta, g] : by_theta)
-        if (g->fit_free) f.data << num(theta) << " " << num(g->fit_free->lambda_c) << " " << num(g->fit_free->lambda_c_err) << "\n";
-      left << ", \\\n     DATA index " << fixed << " using 1:2:3 with yerrorlines " << style << " title "
+        if (g->fit_free) row(theta, *g->fit_free, g->spread_free);
+      left << ", \\\n     DATA index " << fixed << " using 1:2:5:6 with yerrorlines " << style << " title "
            << gnuplot_string(family + ", plateaus 3/2, 1/2") << ", \\\n     DATA index " << free_block
-           << " using 1:2:3 with yerrorlines dt 2 " << style.substr(0, style.find(" pt")) << " pt 4 title " << gnuplot_string(family + ", plateaus free");
+           << " using 1:2:5:6 with yerrorlines dt 2 " << style.substr(0, style.find(" pt")) << " pt 4 title " << gnuplot_string(family + ", plateaus free");
       const int ratio =
           f.begin_block(family + ": theta_w force_ratio force_ratio_err lambda runs lambda_below lambda_above");
       for (const auto& [theta, g] : by_theta) {

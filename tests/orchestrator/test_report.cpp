@@ -279,7 +279,7 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   // Fig. 6's form: lambda_c of each angle's group (0.05 at 90 deg, 0.0125 at 60) and the force
   // ratio of the series at lambda = 1e-2 (the fixture's 0.5 and 0.8)
   const std::string theta = read(out / "lambda_c_vs_theta.dat");
-  const std::size_t fixed = theta.find("lambda_c_err (the paper's fixed plateaus)");
+  const std::size_t fixed = theta.find("lambda_c_err log10_lambda_c_replica_spread bar_low bar_high (the paper's fixed plateaus)");
   ASSERT_NE(fixed, std::string::npos) << theta;
   for (const char* row : {"\n60 0.0125", "\n90 0.05"}) EXPECT_NE(theta.find(row, fixed), std::string::npos) << row << " in\n" << theta;
   const std::size_t ratio = theta.find("theta_w force_ratio force_ratio_err lambda runs");

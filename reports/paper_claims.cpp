@@ -156,6 +156,11 @@ std::string lambda_c_spread_text(const Crossover::ReplicaSpread& spread) {
                                                  std::to_string(spread.replicas) + " replicas";
 }
 
+/// The spread of log10 lambda_c, or "none" (fewer than two replicas with every width of the fit).
+std::string spread_or_none(const Crossover::ReplicaSpread& spread) {
+  return std::isnan(spread.log10_lambda_c) ? "none" : format_value(spread.log10_lambda_c, 2);
+}
+
 /// lambda_c against the paper's value on the scale it is fitted and drawn on (log10 lambda_c,
 /// with its own error): a linear z would call a lambda_c of 15 +- 8 "2 sigma from 0.07". A
 /// midpoint outside the group's measured lambdas is an extrapolation of the sigmoid (with the
@@ -272,8 +277,8 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         const Crossover::ReplicaSpread &spread = free ? g->spread_free : g->spread,
                                        &spread_90 = free ? right->second->spread_free : right->second->spread;
         if (!std::isnan(spread.log10_lambda_c) || !std::isnan(spread_90.log10_lambda_c))
-          c.measured_text += "; spread of log10 lambda_c over replicas " + format_value(spread.log10_lambda_c, 2) + " and " +
-                             format_value(spread_90.log10_lambda_c, 2) + " at 90 deg";
+          c.measured_text += "; spread of log10 lambda_c over replicas " + spread_or_none(spread) + " and " +
+                             spread_or_none(spread_90) + " at 90 deg";
         if (!(log_sigma > 0)) {
           c.verdict = "not judged: no error";
         } else {

@@ -211,8 +211,13 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       c.subject = g.label;
       c.paper = "0 < 1/b < 1";
       c.measured = 1 / g.fit->b;
-      c.sigma = g.fit->b_err / (g.fit->b * g.fit->b);
+      // sigma: the larger of b's fit error and its spread over the replicas' own fits
+      const double b_sigma = std::isnan(g.spread.b) ? g.fit->b_err : std::max(g.fit->b_err, g.spread.b);
+      c.sigma = b_sigma / (g.fit->b * g.fit->b);
       c.measured_text = format_with_error(c.measured, c.sigma, " +- ");
+      if (!std::isnan(g.spread.b))
+        c.measured_text += " (b's spread " + format_value(g.spread.b, 2) + " over " + std::to_string(g.spread.replicas) +
+                           " replicas)";
       const double nearest = c.measured < 0 ? 0 : c.measured > 1 ? 1 : c.measured;
       if (c.sigma > 0) {
         const double z = std::fabs(c.measured - nearest) / c.sigma;

@@ -183,6 +183,9 @@ TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
   ASSERT_NE(ls, nullptr);
   EXPECT_EQ(ls->verdict, "agrees (z = 1.7 in log10 lambda_c)") << "0.2504 over the spread 0.15, not over 0.0244";
   EXPECT_NE(ls->measured_text.find("spread 0.15 in log10 over 3 replicas"), std::string::npos) << ls->measured_text;
+  const ClaimCheck* bs = find(checks, "stretching exponent", "2D group with replicas");
+  ASSERT_NE(bs, nullptr);
+  EXPECT_NEAR(bs->sigma, 0.1 / (0.56 * 0.56), 1e-12) << "b's spread 0.1, not its error 0.05";
   const ClaimCheck* lsf = find(checks, "free plateaus", "2D group with replicas");
   ASSERT_NE(lsf, nullptr);
   EXPECT_EQ(lsf->verdict, find(checks, "free plateaus", "2D group")->verdict);

@@ -1,5 +1,6 @@
 #include "crossover_groups.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -174,6 +175,11 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
   disambiguate_labels(labels, bases);
   for (std::size_t i = 0; i < labels.size(); ++i) out[i].label = labels[i];
   return out;
+}
+
+double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
+  return std::isnan(spread.log10_lambda_c) ? fit.log10_lambda_c_err
+                                           : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
 }
 
 std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,

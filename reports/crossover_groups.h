@@ -19,6 +19,11 @@ namespace beverloo {
 std::vector<Crossover> crossover_groups(const std::vector<Series>& series,
                                         const std::map<std::string, nlohmann::json>& base_job_of);
 
+/// The sigma of log10 lambda_c that verdicts and error bars use: the larger of the fit's error
+/// and the spread over the replicas' own fits (the fit's error alone without replicas), as an
+/// exponent's sigma is the larger of its error and its spread.
+double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread);
+
 /// Fig. 6's families: the groups with a symmetric hopper angle that differ only in it
 /// (Crossover::angle_family -> theta_w -> the family's group at that angle, the first if two).
 /// fitted_only: only groups with a crossover fit, with fixed or free plateaus.

@@ -143,12 +143,6 @@ bool paper_lambda_c(const Crossover& g, double& value, std::string& text) {
   return true;
 }
 
-/// The sigma of log10 lambda_c for a verdict: the larger of the fit's error and the spread over
-/// replicas (the fit's error alone without replicas), as beta_sigma is for an exponent.
-double log10_lambda_c_sigma(const CrossoverFit& f, const Crossover::ReplicaSpread& spread) {
-  return std::isnan(spread.log10_lambda_c) ? f.log10_lambda_c_err : std::max(f.log10_lambda_c_err, spread.log10_lambda_c);
-}
-
 /// ", spread 0.12 in log10 over 3 replicas", or "" without replicas.
 std::string lambda_c_spread_text(const Crossover::ReplicaSpread& spread) {
   return std::isnan(spread.log10_lambda_c) ? std::string()

@@ -162,8 +162,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
       // the bars: lambda_c times and over 10^sigma, sigma the larger of the fit's error of
       // log10 lambda_c and its spread over the replicas' own fits (as the claims table judges it)
       auto row = [&](double theta, const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
-        const double sigma = std::isnan(spread.log10_lambda_c) ? fit.log10_lambda_c_err
-                                                               : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
+        const double sigma = log10_lambda_c_sigma(fit, spread);
         f.data << num(theta) << " " << num(fit.lambda_c) << " " << num(fit.lambda_c_err) << " "
                << num(spread.log10_lambda_c) << " " << num(fit.lambda_c * std::pow(10.0, -sigma)) << " "
                << num(fit.lambda_c * std::pow(10.0, sigma)) << "\n";

@@ -357,9 +357,8 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     fcsv << "\n";
     // lambda_c with its spread over replicas in decades (log10), where there is one
     auto spread_text = [](const Crossover::ReplicaSpread& r) {
-      return std::isnan(r.log10_lambda_c) ? std::string()
-                                          : " (spread " + fmt(r.log10_lambda_c, 2) + " in log10, " +
-                                                std::to_string(r.replicas) + " replicas)";
+      const std::string phrase = lambda_c_spread_phrase(r);
+      return phrase.empty() ? phrase : " (" + phrase + ")";
     };
     auto measured = [](const Series* s) { return s && s->fit ? fmt(s->fit->beta) + " ± " + fmt(s->fit->beta_err, 2) : std::string("-"); };
     fmd << "| " << markdown_cell(g.label) << " | "

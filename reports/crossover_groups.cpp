@@ -6,6 +6,7 @@
 
 #include "core/digest.h"
 #include "engine/parameters.h"
+#include "reports/number_format.h"
 #include "series_fits.h"
 #include "series_labels.h"
 
@@ -180,6 +181,12 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
 double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
   return std::isnan(spread.log10_lambda_c) ? fit.log10_lambda_c_err
                                            : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
+}
+
+std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread) {
+  return std::isnan(spread.log10_lambda_c) ? std::string()
+                                           : "spread " + format_value(spread.log10_lambda_c, 2) + " in log10 over " +
+                                                 std::to_string(spread.replicas) + " replicas";
 }
 
 std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,

@@ -24,6 +24,9 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series,
 /// exponent's sigma is the larger of its error and its spread.
 double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread);
 
+/// "spread 0.15 in log10 over 3 replicas", or "" without a spread: how every table says it.
+std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread);
+
 /// Fig. 6's families: the groups with a symmetric hopper angle that differ only in it
 /// (Crossover::angle_family -> theta_w -> the family's group at that angle, the first if two).
 /// fitted_only: only groups with a crossover fit, with fixed or free plateaus.

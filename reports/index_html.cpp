@@ -7,6 +7,7 @@
 #include "engine/protocol/run_result.h"
 #include "orchestrator/campaign/job_speed.h"
 #include "orchestrator/campaign/store.h"
+#include "reports/crossover_groups.h"
 #include "reports/number_format.h"
 #include "reports/paper_claims.h"
 
@@ -101,9 +102,8 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
        << "<th>beta(lambda=0)</th><th>beta(lambda=inf)</th></tr>\n";
   // lambda_c's run-to-run spread (in decades) where replicas give one
   auto spread = [](const Crossover::ReplicaSpread& r) {
-    return std::isnan(r.log10_lambda_c) ? std::string()
-                                        : "<br><small>spread " + format_value(r.log10_lambda_c, 2) + " in log10 over " +
-                                              std::to_string(r.replicas) + " replicas</small>";
+    const std::string phrase = lambda_c_spread_phrase(r);
+    return phrase.empty() ? phrase : "<br><small>" + phrase + "</small>";
   };
   for (const Crossover& g : fits.crossovers) {
     html << "<tr><td>" << html_escape(g.label) << "</td><td>" << g.finite.size() << "</td>";

@@ -145,9 +145,8 @@ bool paper_lambda_c(const Crossover& g, double& value, std::string& text) {
 
 /// ", spread 0.12 in log10 over 3 replicas", or "" without replicas.
 std::string lambda_c_spread_text(const Crossover::ReplicaSpread& spread) {
-  return std::isnan(spread.log10_lambda_c) ? std::string()
-                                           : ", spread " + format_value(spread.log10_lambda_c, 2) + " in log10 over " +
-                                                 std::to_string(spread.replicas) + " replicas";
+  const std::string phrase = lambda_c_spread_phrase(spread);
+  return phrase.empty() ? phrase : ", " + phrase;
 }
 
 /// The spread of log10 lambda_c, or "none" (fewer than two replicas with every width of the fit).

@@ -216,6 +216,42 @@ TEST(Report, ForceRatioIsReadAtThePapersLambdaForEveryAngle) {
   fs::remove_all(dir);
 }
 
+TEST(Report, LambdaCBarsOfFig6TakeTheReplicasSpreadWhenItIsTheLarger) {
+  // three replicas whose own sigmoids have lambda_c = 0.03, 0.05, 0.08 (b = 0.8) at both angles:
+  // the spread of log10 lambda_c over them, 0.213 decades, is far above the pooled fit's error,
+  // so each bar must reach lambda_c times and over 10^spread
+  const json sweep = {{"name", "replica bars"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"replica", {0, 1, 2}}}, {{"theta_w_deg", {90, 60}}},
+                                              {{"lambda", {1e-3, 1e-2, 3e-2, 0.1, 1, 10}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double zeta = j["zeta"], mu = j["mu"], w = j["w"];
+    const double lambda_c[] = {0.03, 0.05, 0.08};
+    const double beta = crossover_model(2, zeta / mu, lambda_c[j["replica"].get<int>()], 0.8);
+    const double Q = beverloo_model(w, 0.4, 1.0, beta);
+    return converged_summary(Q, 0.01 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  const std::size_t block = theta.find("bar_low bar_high (the paper's fixed plateaus)");
+  ASSERT_NE(block, std::string::npos) << theta;
+  std::istringstream rows(theta.substr(theta.find('\n', block) + 1));
+  int checked = 0;
+  for (std::string line; std::getline(rows, line) && !line.empty(); ++checked) {
+    std::istringstream in(line);
+    double angle, lambda_c, lambda_c_err, spread, low, high;
+    in >> angle >> lambda_c >> lambda_c_err >> spread >> low >> high;
+    EXPECT_NEAR(spread, 0.213, 0.01) << line;
+    const double log10_err = lambda_c_err / (lambda_c * std::log(10.0));
+    ASSERT_LT(log10_err, spread) << line;
+    EXPECT_NEAR(std::log10(high / lambda_c), spread, 1e-9) << line;
+    EXPECT_NEAR(std::log10(lambda_c / low), spread, 1e-9) << line;
+  }
+  EXPECT_EQ(checked, 2) << theta;
+  fs::remove_all(dir);
+}
+
 TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   const fs::path dir = make_fixture(0.05, 0.8);
   const fs::path out = dir / "report";

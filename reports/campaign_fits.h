@@ -25,6 +25,14 @@ struct SeriesPoint {
   bool flowing() const { return Q > 0 && Q_err > 0; }
 };
 
+/// |F_zeta| / |F_mu| (the paper's Fig. 6b) of a series: the mean over its runs that ended
+/// flowing with a finite ratio (each run's ratio of its window's mean forces), and the standard
+/// error of that mean over those runs (NaN below two runs).
+struct ForceRatio {
+  double mean = NAN, err = NAN;
+  int runs = 0;
+};
+
 struct Series {
   std::string key, label, base_key;  ///< base_key: without zeta and mu (finds the lambda limits)
   /// base_key without the hopper angles as well: the beta(lambda) groups that share it differ
@@ -82,6 +90,7 @@ struct Series {
   };
   std::vector<ClogPoint> clog_points;
   int clogged_points() const;
+  ForceRatio force_ratio;
   /// The flowing points' w, Q and Q_err (what the Beverloo fit takes), in w order.
   void flowing_columns(std::vector<double>& w, std::vector<double>& Q, std::vector<double>& Q_err) const {
     for (const SeriesPoint& p : points)
@@ -108,6 +117,8 @@ struct Crossover {
   /// the finite lambda of its series without a fit (too few flowing widths): a lambda the group
   /// has, where the adaptive planner must not place a new series again
   std::vector<double> unfitted_lambda;
+  /// those series themselves: a series needs no fit for what each run measures (the force ratio)
+  std::vector<const Series*> unfitted;
   const Series* limit0 = nullptr;     ///< lambda = 0 (friction only)
   const Series* limit_inf = nullptr;  ///< lambda = inf (drag only)
   std::optional<CrossoverFit> fit;

@@ -3,6 +3,7 @@
 /// \brief A campaign's finished jobs read from its database and grouped into series (every
 /// parameter but w, the replica, the seed and run.min_time equal), labelled so that no two read
 /// alike; the first step of `beverloo fit` (reports/campaign_fits.h).
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@ struct RunRecord {
   double end_time = 0;    ///< steps x dt: where the run ended (t0)
   double window_start = 0, window_end = 0;  ///< its measurement window (t0)
   double t_max = 0;       ///< its run.t_max
+  double force_ratio = NAN;  ///< |F_zeta| / |F_mu| over its window (NaN: not stored)
 };
 
 struct CampaignRuns {

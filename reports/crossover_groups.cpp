@@ -98,8 +98,10 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
       g.limit_inf = &s;
     else if (s.fit)
       g.finite.push_back(&s);
-    else
+    else {
       g.unfitted_lambda.push_back(s.lambda);
+      g.unfitted.push_back(&s);
+    }
   }
   for (auto& [gkey, g] : groups) {
     const std::string zeta_part = gkey.substr(gkey.find("|zeta=") + 6);
@@ -126,10 +128,12 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
     g.key = sha256_hex(gkey);
     g.angle_family = sha256_hex(s.angle_free_key + gkey.substr(gkey.find('|')));
     g.dimension = s.dimension;
-    if (s.fit)
+    if (s.fit) {
       g.finite.push_back(&s);
-    else
+    } else {
       g.unfitted_lambda.push_back(s.lambda);
+      g.unfitted.push_back(&s);
+    }
   }
   for (auto& [gkey, g] : by_rate_drag) {
     const std::string base = gkey.substr(0, gkey.find('|'));
@@ -183,6 +187,50 @@ double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpr
                                            : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
 }
 
+std::optional<ForceRatioAtLambda> force_ratio_at_paper_lambda(const Crossover& g) {
+  // how far (in decades) each of two bracketing series may lie, and the nearest without a bracket
+  constexpr double kBracketDecades = 1.0, kNearestDecades = 0.5;
+  auto decades = [](double lambda) { return std::log10(lambda / kForceRatioLambda); };
+  std::vector<const Series*> below, above;  // series with a ratio on each side of the lambda
+  for (const auto* list : {&g.finite, &g.unfitted})
+    for (const Series* s : *list) {
+      const double off = decades(s->lambda);
+      if (std::fabs(off) > kBracketDecades || s->force_ratio.runs == 0) continue;
+      (off <= 0 ? below : above).push_back(s);
+    }
+  auto closest = [&](const std::vector<const Series*>& side) {
+    return *std::min_element(side.begin(), side.end(), [&](const Series* a, const Series* b) {
+      return std::fabs(decades(a->lambda)) < std::fabs(decades(b->lambda));
+    });
+  };
+  auto as_read = [](const Series& s) {
+    ForceRatioAtLambda out;
+    out.lambda = out.lambda_below = out.lambda_above = s.lambda;
+    out.mean = s.force_ratio.mean, out.err = s.force_ratio.err, out.runs = s.force_ratio.runs;
+    return out;
+  };
+  if (!below.empty() && !above.empty()) {
+    const Series &lo = *closest(below), &hi = *closest(above);
+    for (const Series* at : {&lo, &hi})
+      if (std::fabs(decades(at->lambda)) < 1e-9) return as_read(*at);  // a series at the lambda itself
+    ForceRatioAtLambda out;
+    out.lambda = kForceRatioLambda;
+    out.lambda_below = lo.lambda;
+    out.lambda_above = hi.lambda;
+    out.runs = lo.force_ratio.runs + hi.force_ratio.runs;
+    const double t = -decades(lo.lambda) / (decades(hi.lambda) - decades(lo.lambda));
+    out.mean = std::exp((1 - t) * std::log(lo.force_ratio.mean) + t * std::log(hi.force_ratio.mean));
+    out.err = out.mean * std::hypot((1 - t) * lo.force_ratio.err / lo.force_ratio.mean,
+                                    t * hi.force_ratio.err / hi.force_ratio.mean);
+    return out;
+  }
+  const std::vector<const Series*>& side = below.empty() ? above : below;
+  if (side.empty()) return std::nullopt;
+  const Series& nearest = *closest(side);
+  if (std::fabs(decades(nearest.lambda)) > kNearestDecades) return std::nullopt;
+  return as_read(nearest);
+}
+
 std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread) {
   return std::isnan(spread.log10_lambda_c) ? std::string()
                                            : "spread " + format_value(spread.log10_lambda_c, 2) + " in log10 over " +
@@ -193,8 +241,10 @@ std::map<std::string, std::map<double, const Crossover*>> angle_families(const s
                                                                          bool fitted_only) {
   std::map<std::string, std::map<double, const Crossover*>> families;
   for (const Crossover& g : crossovers) {
-    if (g.finite.empty() || (fitted_only && !g.fit && !g.fit_free)) continue;
-    const Series& s = *g.finite.front();
+    if (fitted_only && !g.fit && !g.fit_free) continue;
+    const Series* any = !g.finite.empty() ? g.finite.front() : !g.unfitted.empty() ? g.unfitted.front() : nullptr;
+    if (!any) continue;  // limits only: no angle of its own to be read at
+    const Series& s = *any;
     if (s.theta_left == s.theta_right) families[g.angle_family].emplace(s.theta_left, &g);
   }
   return families;

@@ -4,7 +4,9 @@
 /// and lambda = inf limits, fitted with the paper's fixed plateaus and with free ones. Two
 /// lambda axes: the text's (zeta and mu at a fixed dissipation scale) and the authors' (drag as
 /// a rate times the mass, both of their branches in one group).
+#include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,9 +29,27 @@ double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpr
 /// "spread 0.15 in log10 over 3 replicas", or "" without a spread: how every table says it.
 std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread);
 
+/// Fig. 6b reads the force ratio |F_zeta| / |F_mu| at this lambda, for every hopper angle.
+inline constexpr double kForceRatioLambda = 1e-2;
+
+/// A group's force ratio read at kForceRatioLambda from its finite-lambda series, fitted or not
+/// (Series::force_ratio), and the lambdas it was read from.
+struct ForceRatioAtLambda {
+  double lambda = NAN;  ///< kForceRatioLambda when bracketed (or hit), else the nearest series' lambda
+  double mean = NAN, err = NAN;  ///< err NaN: a series of one run, no error
+  double lambda_below = NAN, lambda_above = NAN;
+  int runs = 0;
+};
+/// Interpolated linearly in log ratio against log lambda between the two series nearest to it
+/// on either side within a decade (the ratio is close to proportional to lambda), its relative
+/// error propagated from theirs; a series at kForceRatioLambda itself is read as it is; without
+/// a bracket, the nearest series within half a decade. Nothing when none is near enough.
+std::optional<ForceRatioAtLambda> force_ratio_at_paper_lambda(const Crossover& g);
+
 /// Fig. 6's families: the groups with a symmetric hopper angle that differ only in it
 /// (Crossover::angle_family -> theta_w -> the family's group at that angle, the first if two).
-/// fitted_only: only groups with a crossover fit, with fixed or free plateaus.
+/// Groups without a finite-lambda series (limits only) have none. fitted_only: only groups with
+/// a crossover fit, with fixed or free plateaus.
 std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,
                                                                          bool fitted_only);
 

@@ -292,6 +292,61 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   }
 }
 
+/// Fig. 6b: the drag-to-friction force ratio |F_zeta| / |F_mu| at lambda = 1e-2 rises as
+/// theta_w falls, and "in the low-theta_w limit (theta_w <= 30 deg) the ratio stops increasing".
+/// Read per angle by force_ratio_at_paper_lambda (fitted or not: a ratio needs no fit), checked
+/// as r(theta_w) / r(90), a direction as lambda_c's fall is, and below 30 deg as r(theta_w) /
+/// r(30), which agrees when it lies within kClaimAgreeSigmas sigma of 1 (sigma of the log of
+/// the ratio, from both angles' errors; none for a series of one run).
+void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  for (const auto& [family, by_theta] : angle_families(fits.crossovers, /*fitted_only=*/false)) {
+    std::map<double, std::pair<const Crossover*, ForceRatioAtLambda>> ratio;
+    for (const auto& [theta, g] : by_theta)
+      if (const auto r = force_ratio_at_paper_lambda(*g)) ratio.emplace(theta, std::pair{g, *r});
+    auto compare = [&](double theta, double reference, bool plateau) {
+      const auto at = ratio.find(theta), ref = ratio.find(reference);
+      if (at == ratio.end() || ref == ratio.end()) return;
+      const ForceRatioAtLambda &a = at->second.second, &b = ref->second.second;
+      ClaimCheck c;
+      c.claim = plateau ? "Fig. 6b: the force ratio |F_zeta| / |F_mu| at lambda = 1e-2 stops rising below theta_w = 30 deg: "
+                          "r(theta_w) / r(30)"
+                        : "Fig. 6b: the force ratio |F_zeta| / |F_mu| at lambda = 1e-2 rises as theta_w falls: r(theta_w) / r(90)";
+      c.subject = at->second.first->label + " at theta_w = " + format_value(theta, 3);
+      c.paper = plateau ? "~1 (a plateau)" : "> 1";
+      const double log_ratio = std::log(a.mean / b.mean);
+      const double log_sigma = std::hypot(a.err / a.mean, b.err / b.mean);
+      c.measured = a.mean / b.mean;
+      c.sigma = c.measured * log_sigma;
+      auto read = [](const ForceRatioAtLambda& r) {
+        return (std::isnan(r.err) ? format_value(r.mean, 3) + " (one run)" : format_with_error(r.mean, r.err, " +- ")) +
+               (r.lambda == kForceRatioLambda ? std::string() : " at lambda = " + format_value(r.lambda, 2));
+      };
+      c.measured_text = (std::isnan(c.sigma) ? format_value(c.measured, 3) : format_with_error(c.measured, c.sigma, " +- ")) +
+                        " (" + read(a) + " against " + read(b) + " at " + format_value(reference, 3) + " deg)";
+      if (!(log_sigma > 0)) {
+        c.verdict = "not judged: no error (a series of one run at an angle)";
+      } else if (plateau) {
+        const double z = std::fabs(log_ratio) / log_sigma;
+        c.judged = true;
+        c.agrees = z <= kClaimAgreeSigmas;
+        c.verdict = std::string(c.agrees ? "agrees" : log_ratio > 0 ? "differs (rises" : "differs (falls") +
+                    (c.agrees ? " (z = " : ", z = ") + z_text(z) + ")";
+      } else {
+        const double z = log_ratio / log_sigma;  // > 0: a rise
+        c.judged = std::fabs(z) > kClaimAgreeSigmas;
+        c.agrees = z > kClaimAgreeSigmas;
+        c.verdict = c.judged ? std::string(c.agrees ? "agrees (rises" : "differs (falls") + ", z = " + z_text(std::fabs(z)) + ")"
+                             : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
+      }
+      out.push_back(c);
+    };
+    for (auto it = ratio.rbegin(); it != ratio.rend(); ++it)  // from the flat hopper down
+      if (it->first < 90) compare(it->first, 90, false);
+    for (auto it = ratio.rbegin(); it != ratio.rend(); ++it)
+      if (it->first < 30) compare(it->first, 30, true);
+  }
+}
+
 /// The experiments (oil droplets, Fig. 8): beta ~ 0.49 and k ~ 1.5, on measured series.
 void experiment_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   for (const Series& s : fits.series) {
@@ -416,6 +471,7 @@ std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
   }
   crossover_checks(fits, out);
   theta_checks(fits, out);
+  force_ratio_checks(fits, out);
   heatmap_k_checks(fits, HeatmapLimit{false}, out);
   heatmap_k_checks(fits, HeatmapLimit{true}, out);
   experiment_checks(fits, out);

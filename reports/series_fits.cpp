@@ -90,10 +90,23 @@ void clog_statistics(Series& s, const std::vector<RunRecord>& runs) {
   for (const auto& [w, obs] : by_w) s.clog_points.push_back({w, t_max[w], kaplan_meier(obs)});
 }
 
+/// Series::force_ratio: the runs that ended flowing (a clogged run's window is its jam).
+void force_ratio(Series& s, const std::vector<RunRecord>& runs) {
+  std::vector<double> values;
+  for (const RunRecord& r : runs)
+    if (!r.clogged && r.Q > 0 && std::isfinite(r.force_ratio) && r.force_ratio > 0) values.push_back(r.force_ratio);
+  s.force_ratio.runs = static_cast<int>(values.size());
+  if (values.empty()) return;
+  s.force_ratio.mean = 0;
+  for (double v : values) s.force_ratio.mean += v / values.size();
+  s.force_ratio.err = sample_sd(values) / std::sqrt(values.size());
+}
+
 }  // namespace
 
 void fit_series(Series& s, const std::vector<RunRecord>& runs) {
   pool_points(s, runs);
+  force_ratio(s, runs);
   std::vector<double> w, Q, e;
   s.flowing_columns(w, Q, e);
   try {

@@ -254,6 +254,56 @@ TEST(PaperClaims, LambdaCsFallWithTheAngleIsADirectionJudgedBeyondTwoSigma) {
   EXPECT_EQ(find(checks, "free plateaus: lambda_c(theta_w)", "A at theta_w = 60"), nullptr) << "no free fit";
 }
 
+TEST(PaperClaims, Fig6bForceRatioRisesAsTheAngleFallsAndStopsBelowThirtyDegreesWithoutAnyFit) {
+  CampaignFits fits;
+  // one unfitted series at lambda = 1e-2 per angle (a ratio needs no Beverloo fit): family A
+  // rises 90 -> 60 -> 30 and stays at 20 deg; family B keeps rising at 20 deg; family C has one
+  // run per angle (no error)
+  const std::vector<std::tuple<std::string, double, double, double, int>> groups = {
+      {"A", 90, 0.020, 0.001, 3}, {"A", 60, 0.030, 0.001, 3}, {"A", 30, 0.050, 0.002, 3}, {"A", 20, 0.052, 0.002, 3},
+      {"B", 90, 0.020, 0.001, 3}, {"B", 30, 0.050, 0.002, 3}, {"B", 20, 0.080, 0.003, 3},
+      {"C", 90, 0.020, NAN, 1},   {"C", 60, 0.040, NAN, 1}};
+  fits.series.reserve(groups.size());
+  for (const auto& [family, theta, ratio, err, runs] : groups) {
+    Series s = series(family, 2, 1e-2, 1.0, 0.05);
+    s.fit.reset();
+    s.theta_left = s.theta_right = theta;
+    s.force_ratio = {ratio, err, runs};
+    fits.series.push_back(s);
+    Crossover g;
+    g.label = family;
+    g.angle_family = family;
+    g.unfitted = {&fits.series.back()};
+    g.unfitted_lambda = {1e-2};
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const std::string rises = "Fig. 6b: the force ratio |F_zeta| / |F_mu| at lambda = 1e-2 rises as theta_w falls";
+  const std::string stops = "stops rising below theta_w = 30 deg";
+  const ClaimCheck* a60 = find(checks, rises, "A at theta_w = 60");
+  ASSERT_NE(a60, nullptr);
+  EXPECT_NEAR(a60->measured, 1.5, 1e-12);
+  // log(1.5) = 0.405 over hypot(0.05, 0.0333) = 0.0601: z = 6.7
+  EXPECT_EQ(a60->verdict, "agrees (rises, z = 6.7)");
+  EXPECT_TRUE(a60->judged && a60->agrees);
+  const ClaimCheck* a20 = find(checks, stops, "A at theta_w = 20");
+  ASSERT_NE(a20, nullptr);
+  EXPECT_NEAR(a20->measured, 1.04, 1e-12);
+  EXPECT_TRUE(a20->judged && a20->agrees) << a20->verdict;  // log(1.04) over 0.0566: z = 0.7
+  EXPECT_EQ(a20->verdict, "agrees (z = 0.7)");
+  const ClaimCheck* b20 = find(checks, stops, "B at theta_w = 20");
+  ASSERT_NE(b20, nullptr);
+  EXPECT_TRUE(b20->judged);
+  EXPECT_FALSE(b20->agrees);  // log(1.6) = 0.47 over hypot(0.04, 0.0375) = 0.0548: z = 8.6
+  EXPECT_EQ(b20->verdict.rfind("differs (rises", 0), 0u) << b20->verdict;
+  EXPECT_EQ(find(checks, stops, "A at theta_w = 60"), nullptr) << "the plateau is claimed below 30 deg only";
+  const ClaimCheck* c60 = find(checks, rises, "C at theta_w = 60");
+  ASSERT_NE(c60, nullptr);
+  EXPECT_FALSE(c60->judged);
+  EXPECT_EQ(c60->verdict.rfind("not judged: no error", 0), 0u) << c60->verdict;
+  EXPECT_NE(c60->measured_text.find("(one run)"), std::string::npos) << c60->measured_text;
+}
+
 TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
   CampaignFits fits;
   Series measured = series("droplets 45/0", 2, INFINITY, 0.55, 0.10, 1, 0.1, 1.47, 0.3);

@@ -228,6 +228,44 @@ TEST(Report, ForceRatioIsReadAtThePapersLambdaForEveryAngle) {
   fs::remove_all(dir);
 }
 
+TEST(Report, Fig6bForceRatioIsDrawnAndJudgedWithoutACrossoverFit) {
+  // the paper's Fig. 6b as a DP campaign can afford it: lambda = 1e-2 at two widths per angle,
+  // too few for a Beverloo fit, so no beta(lambda) and no lambda_c at any angle; the ratio is
+  // 0.02, 0.03, 0.05 and 0.05 (+-1 % across the two widths) at 90, 60, 30 and 20 deg
+  const json sweep = {{"name", "ratios without fits"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"theta_w_deg", {90, 60, 30, 20}}}, {{"lambda", {1e-2}}}, {{"w", {5, 7}}}}}}}};
+  const std::map<double, double> ratio_at = {{90, 0.02}, {60, 0.03}, {30, 0.05}, {20, 0.05}};
+  const fs::path dir = campaign_of(sweep, [&](const json& j) {
+    const double w = j["w"];
+    const double Q = beverloo_model(w, 0.4, 1.0, 1.0);
+    return converged_summary(Q, 0.02 * Q, ratio_at.at(j["theta_w_left_deg"].get<double>()) * (1 + 0.01 * (w - 6)));
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  EXPECT_TRUE(block_rows(theta, "bar_low bar_high (the paper's fixed plateaus)").empty()) << "no crossover fit";
+  const std::vector<std::string> rows =
+      block_rows(theta, "theta_w force_ratio force_ratio_err lambda runs lambda_below lambda_above");
+  ASSERT_EQ(rows.size(), 4u) << theta;
+  for (const std::string& line : rows) {
+    std::istringstream in(line);
+    double angle, ratio, err, lambda;
+    int runs;
+    in >> angle >> ratio >> err >> lambda >> runs;
+    EXPECT_NEAR(ratio, ratio_at.at(angle), 1e-12) << line;
+    EXPECT_NEAR(err, 0.01 * ratio, 1e-12) << line;  // the two runs' standard error
+    EXPECT_DOUBLE_EQ(lambda, 1e-2) << line;
+    EXPECT_EQ(runs, 2) << line;
+  }
+  EXPECT_TRUE(fs::exists(out / "lambda_c_vs_theta.svg"));
+  const std::string claims = read(out / "paper_claims.md");
+  for (const char* row : {"theta=30/30 N=400 at theta_w = 30 | > 1 | 2.50 +- 0.04", "agrees (rises, z = 64.8)",
+                          "theta=20/20 N=400 at theta_w = 20 | ~1 (a plateau) | 1.000 +- 0.014", "agrees (z = 0.0)"})
+    EXPECT_NE(claims.find(row), std::string::npos) << row << " in\n" << claims;
+  fs::remove_all(dir);
+}
+
 TEST(Report, LambdaCBarsOfFig6TakeTheReplicasSpreadWhenItIsTheLarger) {
   // three replicas whose own sigmoids have lambda_c = 0.03, 0.05, 0.08 (b = 0.8) at both angles:
   // the spread of log10 lambda_c over them, 0.213 decades, is far above the pooled fit's error,

@@ -143,11 +143,12 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
       if (!lowest || s->lambda < lowest->lambda) lowest = s;
       if (!highest || s->lambda > highest->lambda) highest = s;
     }
-    std::set<double> frictions, drags;
-    for (const Series* s : g.finite) {
-      frictions.insert(s->mu);
-      drags.insert(s->drag_rate);
-    }
+    std::set<double> frictions, drags;  // of every finite-lambda series, fitted or not
+    for (const auto* list : {&g.finite, &g.unfitted})
+      for (const Series* s : *list) {
+        frictions.insert(s->mu);
+        drags.insert(s->drag_rate);
+      }
     const Series* any_inf = nullptr;
     for (const Series& s : series) {
       if (s.base_key != base || s.drain) continue;
@@ -160,7 +161,8 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series, const
       }
     }
     if (!g.limit_inf) g.limit_inf = any_inf;
-    const Series* any = lowest ? lowest : g.limit0;
+    // a group without a fitted series is still named after its series (Fig. 6b reads its ratio)
+    const Series* any = lowest ? lowest : !g.unfitted.empty() ? g.unfitted.front() : g.limit0;
     g.label = std::to_string(any ? any->dimension : g.dimension) + "D " + (any ? any->stiffness : std::string()) +
               (frictions.size() == 1   ? " mu=" + fmt(*frictions.begin(), 4) + " (drag rate)"
                : drags.size() == 1     ? " drag_rate=" + fmt(*drags.begin(), 4) + " (mu varied)"
@@ -212,7 +214,7 @@ std::optional<ForceRatioAtLambda> force_ratio_at_paper_lambda(const Crossover& g
   if (!below.empty() && !above.empty()) {
     const Series &lo = *closest(below), &hi = *closest(above);
     for (const Series* at : {&lo, &hi})
-      if (std::fabs(decades(at->lambda)) < 1e-9) return as_read(*at);  // a series at the lambda itself
+      if (std::fabs(decades(at->lambda)) < 1e-6) return as_read(*at);  // a series at the lambda itself
     ForceRatioAtLambda out;
     out.lambda = kForceRatioLambda;
     out.lambda_below = lo.lambda;

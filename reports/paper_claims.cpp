@@ -319,7 +319,8 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
       c.sigma = c.measured * log_sigma;
       auto read = [](const ForceRatioAtLambda& r) {
         return (std::isnan(r.err) ? format_value(r.mean, 3) + " (one run)" : format_with_error(r.mean, r.err, " +- ")) +
-               (r.lambda == kForceRatioLambda ? std::string() : " at lambda = " + format_value(r.lambda, 2));
+               (std::fabs(std::log10(r.lambda / kForceRatioLambda)) < 1e-6 ? std::string()
+                                                                         : " at lambda = " + format_value(r.lambda, 2));
       };
       c.measured_text = (std::isnan(c.sigma) ? format_value(c.measured, 3) : format_with_error(c.measured, c.sigma, " +- ")) +
                         " (" + read(a) + " against " + read(b) + " at " + format_value(reference, 3) + " deg)";

@@ -31,6 +31,9 @@ struct SeriesPoint {
 struct ForceRatio {
   double mean = NAN, err = NAN;
   int runs = 0;
+  /// per width, the mean over its runs: the ratio grows with w, so two angles are compared
+  /// width by width where they share widths (paper_claims), not through the means' scatter
+  std::map<double, double> by_w;
 };
 
 struct Series {

@@ -209,6 +209,7 @@ std::optional<ForceRatioAtLambda> force_ratio_at_paper_lambda(const Crossover& g
     ForceRatioAtLambda out;
     out.lambda = out.lambda_below = out.lambda_above = s.lambda;
     out.mean = s.force_ratio.mean, out.err = s.force_ratio.err, out.runs = s.force_ratio.runs;
+    out.series = &s;
     return out;
   };
   if (!below.empty() && !above.empty()) {

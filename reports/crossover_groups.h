@@ -39,6 +39,7 @@ struct ForceRatioAtLambda {
   double mean = NAN, err = NAN;  ///< err NaN: a series of one run, no error
   double lambda_below = NAN, lambda_above = NAN;
   int runs = 0;
+  const Series* series = nullptr;  ///< the series read as it is (nullptr when interpolated)
 };
 /// Interpolated linearly in log ratio against log lambda between the two series nearest to it
 /// on either side within a decade (the ratio is close to proportional to lambda), its relative

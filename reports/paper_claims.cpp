@@ -10,6 +10,7 @@
 #include "core/text_escape.h"
 #include "reports/crossover_groups.h"
 #include "reports/number_format.h"
+#include "reports/series_fits.h"
 
 namespace beverloo {
 namespace {
@@ -313,9 +314,22 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
                         : "Fig. 6b: the force ratio |F_zeta| / |F_mu| at lambda = 1e-2 rises as theta_w falls: r(theta_w) / r(90)";
       c.subject = at->second.first->label + " at theta_w = " + format_value(theta, 3);
       c.paper = plateau ? "~1 (a plateau)" : "> 1";
-      const double log_ratio = std::log(a.mean / b.mean);
-      const double log_sigma = std::hypot(a.err / a.mean, b.err / b.mean);
-      c.measured = a.mean / b.mean;
+      double log_ratio = std::log(a.mean / b.mean);
+      double log_sigma = std::hypot(a.err / a.mean, b.err / b.mean);
+      // Both read as they are at two or more common widths: the ratio of the two angles width by
+      // width (it grows with w, by 40 % over the DP campaign's widths, which the means' standard
+      // errors would count as scatter), its log's mean and standard error over those widths.
+      std::vector<double> paired;
+      if (a.series && b.series)
+        for (const auto& [w, r] : a.series->force_ratio.by_w)
+          if (const auto other = b.series->force_ratio.by_w.find(w); other != b.series->force_ratio.by_w.end())
+            paired.push_back(std::log(r / other->second));
+      if (paired.size() >= 2) {
+        log_ratio = 0;
+        for (double v : paired) log_ratio += v / paired.size();
+        log_sigma = sample_sd(paired) / std::sqrt(paired.size());
+      }
+      c.measured = std::exp(log_ratio);
       c.sigma = c.measured * log_sigma;
       auto read = [](const ForceRatioAtLambda& r) {
         return (std::isnan(r.err) ? format_value(r.mean, 3) + " (one run)" : format_with_error(r.mean, r.err, " +- ")) +
@@ -323,7 +337,8 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
                                                                          : " at lambda = " + format_value(r.lambda, 2));
       };
       c.measured_text = (std::isnan(c.sigma) ? format_value(c.measured, 3) : format_with_error(c.measured, c.sigma, " +- ")) +
-                        " (" + read(a) + " against " + read(b) + " at " + format_value(reference, 3) + " deg)";
+                        " (" + read(a) + " against " + read(b) + " at " + format_value(reference, 3) + " deg" +
+                        (paired.size() >= 2 ? "; width by width over " + std::to_string(paired.size()) + " widths" : "") + ")";
       if (!(log_sigma > 0)) {
         c.verdict = "not judged: no error (a series of one run at an angle)";
       } else if (plateau) {

@@ -93,8 +93,17 @@ void clog_statistics(Series& s, const std::vector<RunRecord>& runs) {
 /// Series::force_ratio: the runs that ended flowing (a clogged run's window is its jam).
 void force_ratio(Series& s, const std::vector<RunRecord>& runs) {
   std::vector<double> values;
+  std::map<double, std::vector<double>> by_w;
   for (const RunRecord& r : runs)
-    if (!r.clogged && r.Q > 0 && std::isfinite(r.force_ratio) && r.force_ratio > 0) values.push_back(r.force_ratio);
+    if (!r.clogged && r.Q > 0 && std::isfinite(r.force_ratio) && r.force_ratio > 0) {
+      values.push_back(r.force_ratio);
+      by_w[r.w].push_back(r.force_ratio);
+    }
+  for (const auto& [w, at] : by_w) {
+    double mean = 0;
+    for (double v : at) mean += v / at.size();
+    s.force_ratio.by_w[w] = mean;
+  }
   s.force_ratio.runs = static_cast<int>(values.size());
   if (values.empty()) return;
   s.force_ratio.mean = 0;

@@ -304,6 +304,40 @@ TEST(PaperClaims, Fig6bForceRatioRisesAsTheAngleFallsAndStopsBelowThirtyDegreesW
   EXPECT_NE(c60->measured_text.find("(one run)"), std::string::npos) << c60->measured_text;
 }
 
+TEST(PaperClaims, Fig6bForceRatiosOfTwoAnglesAreComparedWidthByWidthWhereTheyShareWidths) {
+  // the ratio grows by 20 % from w = 5 to w = 7 at both angles, and 20 deg lies 2 % above 30 deg
+  // at each width: the means' standard errors (10 %) hide that rise, the width-by-width ratio
+  // (1.9 % and 2.0 %) does not
+  CampaignFits fits;
+  const std::vector<std::tuple<double, double, double>> at = {{30, 0.045, 0.055}, {20, 0.0459, 0.05605}};
+  fits.series.reserve(at.size());
+  for (const auto& [theta, r5, r7] : at) {
+    Series s = series("D", 2, 1e-2, 1.0, 0.05);
+    s.fit.reset();
+    s.theta_left = s.theta_right = theta;
+    s.force_ratio = {(r5 + r7) / 2, (r7 - r5) / 2, 2};
+    s.force_ratio.by_w = {{5.0, r5}, {7.0, r7}};
+    fits.series.push_back(s);
+    Crossover g;
+    g.label = "D";
+    g.angle_family = "D";
+    g.unfitted = {&fits.series.back()};
+    g.unfitted_lambda = {1e-2};
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* d20 = find(checks, "stops rising below theta_w = 30 deg", "D at theta_w = 20");
+  ASSERT_NE(d20, nullptr);
+  // log(0.0459 / 0.045) = 0.01980, log(0.05605 / 0.055) = 0.01891: mean 0.01936, standard error
+  // 0.00045 (the means alone: log(1.0191) over hypot(0.098, 0.098) = 0.139, z = 0.1, a plateau)
+  EXPECT_NEAR(d20->measured, std::exp(0.019357), 1e-5);
+  EXPECT_NEAR(d20->sigma / d20->measured, 0.000446, 0.00001);
+  EXPECT_TRUE(d20->judged);
+  EXPECT_FALSE(d20->agrees) << d20->verdict;
+  EXPECT_EQ(d20->verdict.rfind("differs (rises", 0), 0u) << d20->verdict;
+  EXPECT_NE(d20->measured_text.find("width by width over 2 widths"), std::string::npos) << d20->measured_text;
+}
+
 TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
   CampaignFits fits;
   Series measured = series("droplets 45/0", 2, INFINITY, 0.55, 0.10, 1, 0.1, 1.47, 0.3);

@@ -239,7 +239,11 @@ TEST(Report, Fig6bForceRatioIsDrawnAndJudgedWithoutACrossoverFit) {
   const fs::path dir = campaign_of(sweep, [&](const json& j) {
     const double w = j["w"];
     const double Q = beverloo_model(w, 0.4, 1.0, 1.0);
-    return converged_summary(Q, 0.02 * Q, ratio_at.at(j["theta_w_left_deg"].get<double>()) * (1 + 0.01 * (w - 6)));
+    // and a little noise that differs between the angles (+-0.3 % at 90 deg), so that the claims'
+    // width-by-width comparison has a scatter
+    const double theta = j["theta_w_left_deg"];
+    const double noise = (w == 5 ? 0.003 : -0.003) * theta / 90;
+    return converged_summary(Q, 0.02 * Q, ratio_at.at(theta) * (1 + 0.01 * (w - 6) + noise));
   });
   const fs::path out = dir / "report";
   write_report(dir.string(), out.string());
@@ -253,15 +257,17 @@ TEST(Report, Fig6bForceRatioIsDrawnAndJudgedWithoutACrossoverFit) {
     double angle, ratio, err, lambda;
     int runs;
     in >> angle >> ratio >> err >> lambda >> runs;
-    EXPECT_NEAR(ratio, ratio_at.at(angle), 1e-12) << line;
-    EXPECT_NEAR(err, 0.01 * ratio, 1e-12) << line;  // the two runs' standard error
+    EXPECT_NEAR(ratio, ratio_at.at(angle), 1e-12 * ratio) << line;
+    EXPECT_NEAR(err, 0.01 * ratio, 0.0031 * ratio) << line;  // the two runs' standard error
     EXPECT_DOUBLE_EQ(lambda, 1e-2) << line;
     EXPECT_EQ(runs, 2) << line;
   }
   EXPECT_TRUE(fs::exists(out / "lambda_c_vs_theta.svg"));
   const std::string claims = read(out / "paper_claims.md");
-  for (const char* row : {"theta=30/30 N=400 at theta_w = 30 | > 1 | 2.50 +- 0.04", "agrees (rises, z = 64.8)",
-                          "theta=20/20 N=400 at theta_w = 20 | ~1 (a plateau) | 1.000 +- 0.014", "agrees (z = 0.0)"})
+  // width by width: 30 against 90 deg is 2.5 at both widths to 0.1 %; 20 against 30 deg is 1
+  // to 0.03 %, a plateau
+  for (const char* row : {"theta=30/30 N=400 at theta_w = 30 | > 1 | 2.500 +- 0.005 (", "at 90 deg; width by width over 2 widths) | agrees (rises, z = ",
+                          "theta=20/20 N=400 at theta_w = 20 | ~1 (a plateau) | 1.0000 +- 0.0003 (", "at 30 deg; width by width over 2 widths) | agrees (z = 0.0)"})
     EXPECT_NE(claims.find(row), std::string::npos) << row << " in\n" << claims;
   fs::remove_all(dir);
 }

@@ -5,7 +5,8 @@
 // (right, its panel b) the ratio of the mean drag force to the mean friction force on a particle,
 // |F_zeta| / |F_mu|, against theta_w at the paper's lambda = 1e-2: each series' mean over its
 // runs (error: their standard error), interpolated in log-log between the two series of the group
-// that bracket 1e-2, so that every angle is read at the same lambda. Never rescaled.
+// that bracket 1e-2, so that every angle is read at the same lambda; where angles are read at
+// 1e-2 itself, also one dotted line per width. Never rescaled.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -107,6 +108,23 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                  << " " << num(r.lambda_below) << " " << num(r.lambda_above) << "\n";
         right_plots << (right_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << ratio
                     << " using 1:2:($3 == $3 ? $3 : 0) with yerrorlines " << style << " title " << gnuplot_string(name);
+        // and width by width, thin and dotted in the family's colour, where two or more angles are
+        // read at lambda = 1e-2 itself at that width: the ratio grows with w, so the mean's bar
+        // holds that growth; a width's own line shows the rise the claims table judges (paired)
+        std::map<double, std::map<double, double>> by_width;  // w -> theta_w -> its runs' mean ratio
+        for (const auto& [theta, r] : family->ratio)
+          if (r.series)
+            for (const auto& [w, value] : r.series->force_ratio.by_w) by_width[w][theta] = value;
+        bool titled = false;
+        for (const auto& [w, at] : by_width) {
+          if (at.size() < 2) continue;
+          const int line = f.begin_block(name + ", w = " + num(w) + ": theta_w force_ratio (mean of the width's runs)");
+          for (const auto& [theta, value] : at) f.data << num(theta) << " " << num(value) << "\n";
+          right_plots << ", \\\n     DATA index " << line << " using 1:2 with linespoints dt 3 lw 0.7 ps 0.4 "
+                      << style.substr(0, style.find(" pt")) << " pt 1 "
+                      << (titled ? std::string("notitle") : "title " + gnuplot_string(name + ", one line per width"));
+          titled = true;
+        }
       }
     }
     left << "plot DATA index " << paper << " using 1:2 with points pt 6 ps 2 lc rgb 'gray50' title 'paper: 5e-2 (90), 6e-3 (20)', \\\n"

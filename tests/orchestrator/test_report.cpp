@@ -262,6 +262,17 @@ TEST(Report, Fig6bForceRatioIsDrawnAndJudgedWithoutACrossoverFit) {
     EXPECT_DOUBLE_EQ(lambda, 1e-2) << line;
     EXPECT_EQ(runs, 2) << line;
   }
+  // one dotted line per width, each at all four angles (the ratio at 20 deg, w = 7: 0.05 (1.01 - 0.000667))
+  for (const double w : {5.0, 7.0}) {
+    const std::vector<std::string> line = block_rows(theta, "w = " + std::to_string(static_cast<int>(w)) + ": theta_w force_ratio");
+    ASSERT_EQ(line.size(), 4u) << w << " in\n" << theta;
+    std::istringstream in(line.front());
+    double angle, ratio;
+    in >> angle >> ratio;
+    EXPECT_DOUBLE_EQ(angle, 20);
+    EXPECT_NEAR(ratio, 0.05 * (1 + 0.01 * (w - 6) + (w == 5 ? 0.003 : -0.003) * 20 / 90), 1e-9 * ratio);  // written to 10 digits
+  }
+  EXPECT_NE(read(out / "lambda_c_vs_theta.gp").find("one line per width"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "lambda_c_vs_theta.svg"));
   const std::string claims = read(out / "paper_claims.md");
   // width by width: 30 against 90 deg is 2.5 at both widths to 0.1 %; 20 against 30 deg is 1

@@ -68,7 +68,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     std::ostringstream left, left_plots, right, right_plots;
     left << "set title 'lambda_c (midpoint of beta(lambda))' noenhanced font ',9'\nset logscale y\n"
          << "set format y '10^{%L}'\nset xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel 'lambda_c'\n";
-    right << "set title 'force ratio at lambda = 1e-2 (log-log between the bracketing lambdas)' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
+    right << "set title 'force ratio at lambda = 1e-2 (Fig. 6b; dotted: per width)' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
           << "set xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel '|F_zeta| / |F_mu|' noenhanced\n";
     // the paper's values: 5e-2 at 90 deg, ~6e-3 at 20 deg, a plateau ~5e-3 below 30 deg
     const int paper = f.begin_block("the paper: theta_w lambda_c");

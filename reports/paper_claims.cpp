@@ -325,8 +325,7 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
           if (const auto other = b.series->force_ratio.by_w.find(w); other != b.series->force_ratio.by_w.end())
             paired.push_back(std::log(r / other->second));
       if (paired.size() >= 2) {
-        log_ratio = 0;
-        for (double v : paired) log_ratio += v / paired.size();
+        log_ratio = sample_mean(paired);
         log_sigma = sample_sd(paired) / std::sqrt(paired.size());
       }
       c.measured = std::exp(log_ratio);

@@ -99,15 +99,10 @@ void force_ratio(Series& s, const std::vector<RunRecord>& runs) {
       values.push_back(r.force_ratio);
       by_w[r.w].push_back(r.force_ratio);
     }
-  for (const auto& [w, at] : by_w) {
-    double mean = 0;
-    for (double v : at) mean += v / at.size();
-    s.force_ratio.by_w[w] = mean;
-  }
+  for (const auto& [w, at] : by_w) s.force_ratio.by_w[w] = sample_mean(at);
   s.force_ratio.runs = static_cast<int>(values.size());
   if (values.empty()) return;
-  s.force_ratio.mean = 0;
-  for (double v : values) s.force_ratio.mean += v / values.size();
+  s.force_ratio.mean = sample_mean(values);
   s.force_ratio.err = sample_sd(values) / std::sqrt(values.size());
 }
 
@@ -140,10 +135,17 @@ void fit_series(Series& s, const std::vector<RunRecord>& runs) {
   }
 }
 
+double sample_mean(const std::vector<double>& v) {
+  if (v.empty()) return NAN;
+  double mean = 0;
+  for (double x : v) mean += x / v.size();
+  return mean;
+}
+
 double sample_sd(const std::vector<double>& v) {
   if (v.size() < 2) return NAN;
-  double mean = 0, ss = 0;
-  for (double x : v) mean += x / v.size();
+  const double mean = sample_mean(v);
+  double ss = 0;
   for (double x : v) ss += (x - mean) * (x - mean);
   return std::sqrt(ss / (v.size() - 1));
 }

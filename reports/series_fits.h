@@ -11,6 +11,8 @@ namespace beverloo {
 
 void fit_series(Series& s, const std::vector<RunRecord>& runs);
 
+/// The mean (NaN without values).
+double sample_mean(const std::vector<double>& v);
 /// The sample standard deviation (NaN below two values).
 double sample_sd(const std::vector<double>& v);
 

@@ -240,6 +240,14 @@ std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread) {
                                                  std::to_string(spread.replicas) + " replicas";
 }
 
+std::optional<double> paper_lambda_c_at_angle(int dimension, double theta_w_deg) {
+  if (dimension != 2) return std::nullopt;
+  if (theta_w_deg == 90) return 5e-2;
+  if (theta_w_deg == 20) return 6e-3;
+  if (theta_w_deg == 30) return 5e-3;
+  return std::nullopt;
+}
+
 std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,
                                                                          bool fitted_only) {
   std::map<std::string, std::map<double, const Crossover*>> families;

@@ -29,6 +29,10 @@ double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpr
 /// "spread 0.15 in log10 over 3 replicas", or "" without a spread: how every table says it.
 std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread);
 
+/// lambda_c as the paper's text states it for a hopper angle (2D: 5e-2 at 90 deg, 6e-3 at 20,
+/// the plateau ~5e-3 for theta_w <= 30, read at 30); nothing elsewhere (60 deg, 3D).
+std::optional<double> paper_lambda_c_at_angle(int dimension, double theta_w_deg);
+
 /// Fig. 6b reads the force ratio |F_zeta| / |F_mu| at this lambda, for every hopper angle.
 inline constexpr double kForceRatioLambda = 1e-2;
 

@@ -6,9 +6,14 @@
 // |F_zeta| / |F_mu|, against theta_w at the paper's lambda = 1e-2: each series' mean over its
 // runs (error: their standard error), interpolated in log-log between the two series of the group
 // that bracket 1e-2, so that every angle is read at the same lambda; where angles are read at
-// 1e-2 itself, also one dotted line per width. Never rescaled.
+// 1e-2 itself, also one dotted line per width; (a third panel, for groups without a crossover
+// fit) beta at a lambda two or more angles share against theta_w, with the interval the paper's
+// Eq. 2 puts it in at the angles where the paper states lambda_c (claims table: "Fig. 6a at one
+// lambda"). Never rescaled.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
 
@@ -29,6 +34,14 @@ std::string family_name(const Series& s) {
          (s.drag_rate > 0 ? " (drag rate)" : "");
 }
 
+/// lambda as a key that the same lambda at two angles shares (six significant digits: the
+/// series of one sweep differ in theta_w alone, the rounding only guards the last bits).
+double lambda_key(double lambda) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", lambda);
+  return std::strtod(buf, nullptr);
+}
+
 }  // namespace
 
 ReportFigure lambda_c_vs_theta(const FigureContext& c) {
@@ -44,7 +57,12 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     std::string name;
     std::map<double, const Crossover*> fitted;          // theta_w -> its group with a crossover fit
     std::map<double, ForceRatioAtLambda> ratio;         // theta_w -> its group's force ratio
-    bool shown() const { return fitted.size() >= 2 || ratio.size() >= 2; }
+    // lambda -> theta_w -> the fitted series at that lambda of a group without a crossover fit
+    std::map<double, std::map<double, const Series*>> one_lambda;
+    bool any_one_lambda() const {
+      return std::any_of(one_lambda.begin(), one_lambda.end(), [](const auto& l) { return l.second.size() >= 2; });
+    }
+    bool shown() const { return fitted.size() >= 2 || ratio.size() >= 2 || any_one_lambda(); }
   };
   std::map<std::string, Family> by_key;
   for (const auto& [key, by_theta] : angle_families(c.fits.crossovers, /*fitted_only=*/false)) {
@@ -52,6 +70,8 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     for (const auto& [theta, g] : by_theta) {
       if (g->fit || g->fit_free) family.fitted.emplace(theta, g);
       if (const auto r = force_ratio_at_paper_lambda(*g)) family.ratio.emplace(theta, *r);
+      if (!g->fit && !g->fit_free)
+        for (const Series* s : g->finite) family.one_lambda[lambda_key(s->lambda)].emplace(theta, s);
     }
     if (!family.shown()) continue;
     const Crossover& any = *by_theta.begin()->second;
@@ -65,7 +85,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
   for (const auto& [key, family] : by_key)
     families.emplace(name_uses[family.name] > 1 ? family.name + " [" + key.substr(0, 8) + "]" : family.name, &family);
   if (!families.empty()) {
-    std::ostringstream left, left_plots, right, right_plots;
+    std::ostringstream left, left_plots, right, right_plots, third, third_plots;
     left << "set title 'lambda_c (midpoint of beta(lambda))' noenhanced font ',9'\nset logscale y\n"
          << "set format y '10^{%L}'\nset xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel 'lambda_c'\n";
     right << "set title 'force ratio at lambda = 1e-2 (Fig. 6b; dotted: per width)' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
@@ -75,6 +95,9 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     f.data << "90 0.05\n20 0.006\n";
     const int plateau = f.begin_block("the paper's plateau: theta_w lambda_c");
     f.data << "0 0.005\n30 0.005\n";
+    third << "set title 'Fig. 6a at one lambda: beta (grey: Eq. 2 of the paper, 0 < 1/b < 1)' noenhanced font ',9'\n"
+          << "unset logscale y\nset format y '%g'\nset xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel 'beta'\n";
+    std::map<std::pair<int, double>, int> paper_intervals;  // (d, lambda) -> its block
     int k = 0;
     for (const auto& [name, family] : families) {
       const std::string style = series_style(k++, static_cast<int>(families.size()));
@@ -126,17 +149,45 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
           titled = true;
         }
       }
+      for (const auto& [lambda, at] : family->one_lambda) {
+        if (at.size() < 2) continue;
+        const int d = at.begin()->second->dimension;
+        if (!paper_intervals.count({d, lambda})) {
+          const int block = f.begin_block("the paper's Eq. 2 at lambda = " + num(lambda) +
+                                          " (d = " + std::to_string(d) + "): theta_w beta_mid beta_low beta_high lambda_c");
+          for (const double theta : {20.0, 30.0, 90.0})
+            if (const auto lc = paper_lambda_c_at_angle(d, theta)) {
+              const double edge = d - 1 - std::tanh(std::log10(lambda / *lc)) / 2;
+              f.data << num(theta) << " " << num(d - 1) << " " << num(std::min(d - 1.0, edge)) << " "
+                     << num(std::max(d - 1.0, edge)) << " " << num(*lc) << "\n";
+            }
+          paper_intervals[{d, lambda}] = block;
+          third_plots << (third_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << block
+                      << " using 1:2:3:4 with yerrorbars pt 0 lw 3 lc rgb 'gray60' title "
+                      << gnuplot_string("paper, lambda = " + num(lambda));
+        }
+        const int block = f.begin_block(name + ", lambda = " + num(lambda) + ": theta_w beta beta_err beta_replica_spread");
+        for (const auto& [theta, s] : at)
+          f.data << num(theta) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << " "
+                 << num(s->beta_replica_spread) << "\n";
+        third_plots << (third_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << block
+                    << " using 1:2:3 with yerrorlines " << style << " title "
+                    << gnuplot_string(name + ", lambda = " + num(lambda));
+      }
     }
     left << "plot DATA index " << paper << " using 1:2 with points pt 6 ps 2 lc rgb 'gray50' title 'paper: 5e-2 (90), 6e-3 (20)', \\\n"
          << "     DATA index " << plateau << " using 1:2 with lines dt 3 lc rgb 'gray50' title 'paper: plateau ~5e-3'"
          << left_plots.str();
     std::ostringstream body;
-    body << "set key below font ',8' noenhanced\nset multiplot layout 1,2\n" << left.str() << "\n";
+    const bool one_lambda_panel = third_plots.tellp() > 0;
+    body << "set key below font ',8' noenhanced\nset multiplot layout 1," << (one_lambda_panel ? 3 : 2) << "\n"
+         << left.str() << "\n";
     if (right_plots.tellp() > 0)
       body << right.str() << right_plots.str() << "\n";
     else
       body << "set title 'no flowing runs with friction bracketing lambda = 1e-2 within a decade, or within half a decade of it' noenhanced font ',9'\n"
-           << "unset logscale y\nset yrange [0:1]\nplot -1 notitle\n";
+           << "unset logscale y\nset yrange [0:1]\nplot -1 notitle\nset yrange [*:*]\n";
+    if (one_lambda_panel) body << third.str() << third_plots.str() << "\n";
     body << "unset multiplot";
     f.body = body.str();
   }

@@ -338,6 +338,68 @@ TEST(PaperClaims, Fig6bForceRatiosOfTwoAnglesAreComparedWidthByWidthWhereTheySha
   EXPECT_NE(d20->measured_text.find("width by width over 2 widths"), std::string::npos) << d20->measured_text;
 }
 
+TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfTheMidpoint) {
+  // one fitted series at lambda = 1e-2 per angle and no crossover fit (family E); family F has
+  // a crossover fit (its lambda_c is checked instead); family G's 20 deg fit is not determined
+  CampaignFits fits;
+  const std::vector<std::tuple<std::string, double, double, double>> at = {
+      {"E", 90, 1.30, 1.5}, {"E", 60, 1.10, 1.5}, {"E", 30, 1.28, 1.5}, {"E", 20, 0.85, 1.5},
+      {"F", 90, 1.30, 1.5}, {"F", 20, 0.85, 1.5}, {"G", 90, 1.30, 1.5},  {"G", 20, 0.85, -0.5}};
+  fits.series.reserve(at.size());
+  for (const auto& [family, theta, beta, k] : at) {
+    Series s = series(family + " series", 2, 1e-2, beta, 0.05, 1, 0.05, k);
+    s.theta_left = s.theta_right = theta;
+    fits.series.push_back(s);
+    Crossover g;
+    g.label = family;
+    g.angle_family = family;
+    g.finite = {&fits.series.back()};
+    if (family == "F") {
+      CrossoverFit f;
+      f.lambda_c = 0.05, f.log10_lambda_c = std::log10(0.05), f.log10_lambda_c_err = 0.1, f.lambda_c_err = 0.01;
+      g.fit = f;
+    }
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const std::string falls = "Fig. 6a at one lambda: lambda_c falls as theta_w falls";
+  const std::string side = "Fig. 6a at one lambda: beta lies on the side of the midpoint";
+  const ClaimCheck* e60 = find(checks, falls, "E at theta_w = 60, lambda = 0.01");
+  ASSERT_NE(e60, nullptr);
+  EXPECT_NEAR(e60->measured, -0.20, 1e-12);
+  EXPECT_EQ(e60->verdict, "agrees (falls, z = 2.8)");  // 0.20 over hypot(0.05, 0.05) = 0.0707
+  const ClaimCheck* e30 = find(checks, falls, "E at theta_w = 30, lambda = 0.01");
+  ASSERT_NE(e30, nullptr);
+  EXPECT_FALSE(e30->judged);
+  EXPECT_EQ(e30->verdict.rfind("not resolved", 0), 0u) << e30->verdict;
+  const ClaimCheck* e20 = find(checks, falls, "E at theta_w = 20, lambda = 0.01");
+  ASSERT_NE(e20, nullptr);
+  EXPECT_TRUE(e20->judged && e20->agrees) << e20->verdict;
+  // 90 deg: lambda = 1e-2 lies 0.70 decades below lambda_c = 5e-2, beta in 1 .. 1 + tanh(0.70) / 2
+  const ClaimCheck* s90 = find(checks, side, "E at theta_w = 90, lambda = 0.01");
+  ASSERT_NE(s90, nullptr);
+  EXPECT_NE(s90->paper.find("1 .. 1.3"), std::string::npos) << s90->paper;
+  EXPECT_EQ(s90->verdict, "agrees (z = 0.0 from the interval)");
+  // 20 deg: 0.22 decades above 6e-3, beta in 0.891 .. 1; 0.85 lies 0.041 below, z = 0.8
+  const ClaimCheck* s20 = find(checks, side, "E at theta_w = 20, lambda = 0.01");
+  ASSERT_NE(s20, nullptr);
+  EXPECT_EQ(s20->verdict, "agrees (z = 0.8 from the interval)");
+  // 30 deg (the plateau ~5e-3): beta in 0.854 .. 1; 1.28 lies 0.28 above, z = 5.6
+  const ClaimCheck* s30 = find(checks, side, "E at theta_w = 30, lambda = 0.01");
+  ASSERT_NE(s30, nullptr);
+  EXPECT_TRUE(s30->judged);
+  EXPECT_FALSE(s30->agrees);
+  EXPECT_EQ(s30->verdict, "differs (above, z = 5.6 from the interval)");
+  EXPECT_EQ(find(checks, side, "E at theta_w = 60, lambda = 0.01"), nullptr) << "the paper states no lambda_c at 60 deg";
+  for (const ClaimCheck& c : checks)
+    if (c.claim.rfind("Fig. 6a at one lambda", 0) == 0)
+      EXPECT_NE(c.subject.rfind("F at", 0), 0u) << "a group with a crossover fit is read by its lambda_c";
+  const ClaimCheck* g20 = find(checks, falls, "G at theta_w = 20, lambda = 0.01");
+  ASSERT_NE(g20, nullptr);
+  EXPECT_FALSE(g20->judged);
+  EXPECT_EQ(g20->verdict.rfind("not judged: G series: not determined", 0), 0u) << g20->verdict;
+}
+
 TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
   CampaignFits fits;
   Series measured = series("droplets 45/0", 2, INFINITY, 0.55, 0.10, 1, 0.1, 1.47, 0.3);

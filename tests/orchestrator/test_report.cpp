@@ -283,6 +283,56 @@ TEST(Report, Fig6bForceRatioIsDrawnAndJudgedWithoutACrossoverFit) {
   fs::remove_all(dir);
 }
 
+TEST(Report, Fig6aAtOneLambdaDrawsBetaAgainstTheAngleBesideThePapersIntervals) {
+  // Fig. 6a as a DP campaign can afford it: one lambda (1e-2) and five widths per angle, so a
+  // Beverloo fit at each angle and no crossover fit anywhere; beta = 1.3 at 90 deg, 0.9 at 30
+  const json sweep = {{"name", "one lambda"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"theta_w_deg", {90, 30}}}, {{"lambda", {1e-2}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double w = j["w"], theta = j["theta_w_left_deg"];
+    const double Q = beverloo_model(w, 0.4, 1.0, theta == 90 ? 1.3 : 0.9);
+    return converged_summary(Q, 0.01 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  const std::vector<std::string> rows = block_rows(theta, "lambda = 0.01: theta_w beta beta_err beta_replica_spread");
+  ASSERT_EQ(rows.size(), 2u) << theta;
+  for (const std::string& line : rows) {
+    std::istringstream in(line);
+    double angle, beta, beta_err;
+    in >> angle >> beta >> beta_err;
+    EXPECT_NEAR(beta, angle == 90 ? 1.3 : 0.9, 1e-6) << line;
+    EXPECT_GT(beta_err, 0) << line;
+  }
+  // the paper's intervals: 1 .. 1 + tanh(0.699) / 2 at 90 deg (lambda_c 5e-2), 1 - tanh(0.301) / 2
+  // .. 1 at 30 (the plateau ~5e-3), and at 20 deg (6e-3)
+  const std::vector<std::string> paper = block_rows(theta, "the paper's Eq. 2 at lambda = 0.01 (d = 2)");
+  ASSERT_EQ(paper.size(), 3u) << theta;
+  std::map<double, std::pair<double, double>> interval;
+  for (const std::string& line : paper) {
+    std::istringstream in(line);
+    double angle, mid, lo, hi;
+    in >> angle >> mid >> lo >> hi;
+    EXPECT_DOUBLE_EQ(mid, 1);
+    interval[angle] = {lo, hi};
+  }
+  EXPECT_NEAR(interval[90].second, 1 + std::tanh(std::log10(5.0)) / 2, 1e-9);
+  EXPECT_DOUBLE_EQ(interval[90].first, 1);
+  EXPECT_NEAR(interval[30].first, 1 - std::tanh(std::log10(2.0)) / 2, 1e-9);
+  EXPECT_NE(read(out / "lambda_c_vs_theta.gp").find("multiplot layout 1,3"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "lambda_c_vs_theta.svg"));
+  const std::string claims = read(out / "paper_claims.md");
+  // beta falls by 0.4 from 90 to 30 deg; 1.3 lies in the 90 deg interval, 0.9 in the 30 deg one
+  for (const char* row : {"at theta_w = 30, lambda = 0.01 | < 0 (lambda_c 5e-2 at 90 deg, 6e-3 at 20) | -0.4",
+                          "at theta_w = 90, lambda = 0.01 | 1 .. 1.3 (lambda_c ~0.05) | 1.3",
+                          "at theta_w = 30, lambda = 0.01 | 0.854 .. 1 (lambda_c ~0.005) | 0.9"})
+    EXPECT_NE(claims.find(row), std::string::npos) << row << " in\n" << claims;
+  EXPECT_NE(claims.find("| agrees (falls, z = "), std::string::npos) << claims;
+  fs::remove_all(dir);
+}
+
 TEST(Report, LambdaCBarsOfFig6TakeTheReplicasSpreadWhenItIsTheLarger) {
   // three replicas whose own sigmoids have lambda_c = 0.03, 0.05, 0.08 (b = 0.8) at both angles:
   // the spread of log10 lambda_c over them, 0.213 decades, is far above the pooled fit's error,

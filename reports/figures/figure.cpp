@@ -78,8 +78,9 @@ bool render(Figure& f, const fs::path& dir) {
   std::string plot = f.body.empty() ? "plot " : with_data(f.body);
   for (std::size_t k = 0; f.body.empty() && k < f.plots.size(); ++k) plot += (k ? ", \\\n     " : "") + with_data(f.plots[k]);
   // the commands once per terminal (replot cannot repeat a multiplot)
-  gp << "set terminal svg size 900,720 dynamic background rgb 'white'\nset output '" << f.name << ".svg'\n" << plot
-     << "\nset terminal pngcairo size 900,720\nset output '" << f.name << ".png'\n" << plot << "\nunset output\n";
+  const std::string size = std::to_string(f.width) + "," + std::to_string(f.height);
+  gp << "set terminal svg size " << size << " dynamic background rgb 'white'\nset output '" << f.name << ".svg'\n" << plot
+     << "\nset terminal pngcairo size " << size << "\nset output '" << f.name << ".png'\n" << plot << "\nunset output\n";
   write_text_atomically((dir / (f.name + ".gp")).string(), gp.str());
   if (!gnuplot_available()) return false;
   // no shell: the report directory's path is an argument, never part of a command line

@@ -39,6 +39,7 @@ struct Figure {
   std::ostringstream data;
   std::vector<std::string> plots;  ///< plot clauses; "DATA" stands for the data file
   std::string body;                ///< instead of plots: whole gnuplot commands (multiplot), "DATA" as above
+  int width = 900, height = 720;  ///< pixels (SVG and PNG); a multiplot of three panels is wider
   int blocks = 0;
   /// Starts a data block; returns its gnuplot index.
   int begin_block(const std::string& header);

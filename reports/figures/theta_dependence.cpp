@@ -88,16 +88,21 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     std::ostringstream left, left_plots, right, right_plots, third, third_plots;
     left << "set title 'lambda_c (midpoint of beta(lambda))' noenhanced font ',9'\nset logscale y\n"
          << "set format y '10^{%L}'\nset xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel 'lambda_c'\n";
-    right << "set title 'force ratio at lambda = 1e-2 (Fig. 6b; dotted: per width)' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
+    right << "set title 'Fig. 6b: force ratio at lambda = 1e-2' noenhanced font ',9'\nunset logscale y\nset format y '%g'\n"
           << "set xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel '|F_zeta| / |F_mu|' noenhanced\n";
     // the paper's values: 5e-2 at 90 deg, ~6e-3 at 20 deg, a plateau ~5e-3 below 30 deg
     const int paper = f.begin_block("the paper: theta_w lambda_c");
     f.data << "90 0.05\n20 0.006\n";
     const int plateau = f.begin_block("the paper's plateau: theta_w lambda_c");
     f.data << "0 0.005\n30 0.005\n";
-    third << "set title 'Fig. 6a at one lambda: beta (grey: Eq. 2 of the paper, 0 < 1/b < 1)' noenhanced font ',9'\n"
+    third << "set title 'Fig. 6a at one lambda: beta (grey: the paper)' noenhanced font ',9'\n"
           << "unset logscale y\nset format y '%g'\nset xrange [0:100]\nset xlabel 'theta_w (deg)'\nset ylabel 'beta'\n";
     std::map<std::pair<int, double>, int> paper_intervals;  // (d, lambda) -> its block
+    // one family: its name heads the figure and each legend entry says only what it draws (a DP
+    // family's name is too long for a panel's legend)
+    auto legend = [&](const std::string& name, const std::string& what) {
+      return gnuplot_string(families.size() == 1 ? what : name + ", " + what);
+    };
     int k = 0;
     for (const auto& [name, family] : families) {
       const std::string style = series_style(k++, static_cast<int>(families.size()));
@@ -118,9 +123,9 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
         for (const auto& [theta, g] : family->fitted)
           if (g->fit_free) row(theta, *g->fit_free, g->spread_free);
         left_plots << ", \\\n     DATA index " << fixed << " using 1:2:5:6 with yerrorlines " << style << " title "
-                   << gnuplot_string(name + ", plateaus 3/2, 1/2") << ", \\\n     DATA index " << free_block
+                   << legend(name, "plateaus 3/2, 1/2") << ", \\\n     DATA index " << free_block
                    << " using 1:2:5:6 with yerrorlines dt 2 " << style.substr(0, style.find(" pt")) << " pt 4 title "
-                   << gnuplot_string(name + ", plateaus free");
+                   << legend(name, "plateaus free");
       }
       if (family->ratio.size() >= 2) {
         // force_ratio_err NaN: a series of one run (no error); drawn without a bar
@@ -130,7 +135,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
           f.data << num(theta) << " " << num(r.mean) << " " << num(r.err) << " " << num(r.lambda) << " " << r.runs
                  << " " << num(r.lambda_below) << " " << num(r.lambda_above) << "\n";
         right_plots << (right_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << ratio
-                    << " using 1:2:($3 == $3 ? $3 : 0) with yerrorlines " << style << " title " << gnuplot_string(name);
+                    << " using 1:2:($3 == $3 ? $3 : 0) with yerrorlines " << style << " title " << legend(name, "mean over the runs");
         // and width by width, thin and dotted in the family's colour, where two or more angles are
         // read at lambda = 1e-2 itself at that width: the ratio grows with w, so the mean's bar
         // holds that growth; a width's own line shows the rise the claims table judges (paired)
@@ -145,7 +150,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
           for (const auto& [theta, value] : at) f.data << num(theta) << " " << num(value) << "\n";
           right_plots << ", \\\n     DATA index " << line << " using 1:2 with linespoints dt 3 lw 0.7 ps 0.4 "
                       << style.substr(0, style.find(" pt")) << " pt 1 "
-                      << (titled ? std::string("notitle") : "title " + gnuplot_string(name + ", one line per width"));
+                      << (titled ? std::string("notitle") : "title " + legend(name, "one line per width"));
           titled = true;
         }
       }
@@ -172,22 +177,29 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                  << num(s->beta_replica_spread) << "\n";
         third_plots << (third_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << block
                     << " using 1:2:3 with yerrorlines " << style << " title "
-                    << gnuplot_string(name + ", lambda = " + num(lambda));
+                    << legend(name, "lambda = " + num(lambda));
       }
     }
     left << "plot DATA index " << paper << " using 1:2 with points pt 6 ps 2 lc rgb 'gray50' title 'paper: 5e-2 (90), 6e-3 (20)', \\\n"
          << "     DATA index " << plateau << " using 1:2 with lines dt 3 lc rgb 'gray50' title 'paper: plateau ~5e-3'"
          << left_plots.str();
     std::ostringstream body;
-    const bool one_lambda_panel = third_plots.tellp() > 0;
-    body << "set key below font ',8' noenhanced\nset multiplot layout 1," << (one_lambda_panel ? 3 : 2) << "\n"
-         << left.str() << "\n";
+    // panel a where a family has lambda_c at two angles, b where it has force ratios (or, beside
+    // a, a line that says why not), c where it has beta at one lambda at two angles
+    std::vector<std::string> panels;
+    const bool lambda_c_panel = left_plots.tellp() > 0, one_lambda_panel = third_plots.tellp() > 0;
+    if (lambda_c_panel) panels.push_back(left.str());
     if (right_plots.tellp() > 0)
-      body << right.str() << right_plots.str() << "\n";
-    else
-      body << "set title 'no flowing runs with friction bracketing lambda = 1e-2 within a decade, or within half a decade of it' noenhanced font ',9'\n"
-           << "unset logscale y\nset yrange [0:1]\nplot -1 notitle\nset yrange [*:*]\n";
-    if (one_lambda_panel) body << third.str() << third_plots.str() << "\n";
+      panels.push_back(right.str() + right_plots.str());
+    else if (lambda_c_panel)
+      panels.push_back("set title 'no flowing runs with friction bracketing lambda = 1e-2 within a decade, or within half a "
+                       "decade of it' noenhanced font ',9'\nunset logscale y\nset yrange [0:1]\nplot -1 notitle\nset yrange [*:*]");
+    if (one_lambda_panel) panels.push_back(third.str() + third_plots.str());
+    f.width = std::max(900, 450 * static_cast<int>(panels.size()));
+    body << "set key below font ',8' noenhanced\nset multiplot layout 1," << panels.size();
+    if (families.size() == 1) body << " title " << gnuplot_string(families.begin()->first) << " font ',10' noenhanced";
+    body << "\n";
+    for (const std::string& panel : panels) body << panel << "\n";
     body << "unset multiplot";
     f.body = body.str();
   }

@@ -5,7 +5,9 @@
 /// dissipation limits (d - 1/2 with friction only, d - 3/2 with drag only, for SP and DP), that
 /// the exponent of a limit does not depend on the model or its stiffness, nor on N >= 800,
 /// lambda_c and the stretching exponent of beta(lambda), the fall of lambda_c with the hopper
-/// angle (Fig. 6) and the rise of the drag-to-friction force ratio as it falls (Fig. 6b), the ratio of the prefactors C of the two limits, the corners of Fig. 7b's and
+/// angle (Fig. 6; read at one lambda where no angle has a crossover fit: beta falls with the
+/// angle, and lies where the paper's Eq. 2 with its lambda_c(theta_w) puts it) and the rise of the
+/// drag-to-friction force ratio as it falls (Fig. 6b), the ratio of the prefactors C of the two limits, the corners of Fig. 7b's and
 /// 7c's k maps (smooth DP in each limit, k with beta held), and the experiments' beta and k.
 /// Each check names the series or group it read, the paper's value, the measured one with its
 /// error (and the replicas' spread where there is one), and a verdict by one stated rule. The

@@ -38,6 +38,17 @@ void judge(ClaimCheck& c, double paper_value) {
   c.verdict = std::string(c.agrees ? "agrees" : "differs") + " (z = " + z_text(z) + ")";
 }
 
+/// The verdict on a claimed direction: z, the measured change in sigma, positive in the claimed
+/// direction (`claimed`, e.g. "falls"; `opposite` the other way). Beyond kClaimAgreeSigmas either
+/// way it is judged; within it, "not resolved".
+void judge_direction(ClaimCheck& c, double z, const char* claimed, const char* opposite) {
+  c.judged = std::fabs(z) > kClaimAgreeSigmas;
+  c.agrees = z > kClaimAgreeSigmas;
+  c.verdict = c.judged ? std::string(c.agrees ? "agrees (" : "differs (") + (c.agrees ? claimed : opposite) + ", z = " +
+                             z_text(std::fabs(z)) + ")"
+                       : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
+}
+
 /// The sigma of a series' exponent for a verdict: the larger of the fit error and the spread
 /// over replicas (the fit error alone without replicas).
 double beta_sigma(const Series& s) {
@@ -281,11 +292,7 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         if (!(log_sigma > 0)) {
           c.verdict = "not judged: no error";
         } else {
-          const double z = -log_ratio / log_sigma;  // > 0: a fall
-          c.judged = std::fabs(z) > kClaimAgreeSigmas;
-          c.agrees = z > kClaimAgreeSigmas;
-          c.verdict = c.judged ? std::string(c.agrees ? "agrees (falls" : "differs (rises") + ", z = " + z_text(std::fabs(z)) + ")"
-                               : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
+          judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
         }
         out.push_back(c);
       }
@@ -347,11 +354,7 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
         c.verdict = std::string(c.agrees ? "agrees" : log_ratio > 0 ? "differs (rises" : "differs (falls") +
                     (c.agrees ? " (z = " : ", z = ") + z_text(z) + ")";
       } else {
-        const double z = log_ratio / log_sigma;  // > 0: a rise
-        c.judged = std::fabs(z) > kClaimAgreeSigmas;
-        c.agrees = z > kClaimAgreeSigmas;
-        c.verdict = c.judged ? std::string(c.agrees ? "agrees (rises" : "differs (falls") + ", z = " + z_text(std::fabs(z)) + ")"
-                             : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
+        judge_direction(c, log_ratio / log_sigma, "rises", "falls");
       }
       out.push_back(c);
     };
@@ -408,11 +411,7 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
             } else if (!(c.sigma > 0)) {
               c.verdict = "not judged: no error";
             } else {
-              const double z = -c.measured / c.sigma;  // > 0: a fall
-              c.judged = std::fabs(z) > kClaimAgreeSigmas;
-              c.agrees = z > kClaimAgreeSigmas;
-              c.verdict = c.judged ? std::string(c.agrees ? "agrees (falls" : "differs (rises") + ", z = " + z_text(std::fabs(z)) + ")"
-                                   : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
+              judge_direction(c, -c.measured / c.sigma, "falls", "rises");
             }
             out.push_back(c);
           }

@@ -248,6 +248,11 @@ std::optional<double> paper_lambda_c_at_angle(int dimension, double theta_w_deg)
   return std::nullopt;
 }
 
+std::pair<double, double> paper_beta_interval(int dimension, double lambda, double lambda_c) {
+  const double mid = dimension - 1.0, edge = mid - std::tanh(std::log10(lambda / lambda_c)) / 2;
+  return {std::min(mid, edge), std::max(mid, edge)};
+}
+
 std::map<std::string, std::map<double, const Crossover*>> angle_families(const std::vector<Crossover>& crossovers,
                                                                          bool fitted_only) {
   std::map<std::string, std::map<double, const Crossover*>> families;

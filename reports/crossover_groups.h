@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -32,6 +33,11 @@ std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread);
 /// lambda_c as the paper's text states it for a hopper angle (2D: 5e-2 at 90 deg, 6e-3 at 20,
 /// the plateau ~5e-3 for theta_w <= 30, read at 30); nothing elsewhere (60 deg, 3D).
 std::optional<double> paper_lambda_c_at_angle(int dimension, double theta_w_deg);
+
+/// Where the paper's Eq. 2 (plateaus d - 1/2 and d - 3/2) with 0 < 1/b < 1 puts beta at lambda
+/// for a given lambda_c: between the midpoint d - 1 (1/b -> 0) and d - 1 - tanh(log10(lambda /
+/// lambda_c)) / 2 (1/b = 1), as {low, high}.
+std::pair<double, double> paper_beta_interval(int dimension, double lambda, double lambda_c);
 
 /// Fig. 6b reads the force ratio |F_zeta| / |F_mu| at this lambda, for every hopper angle.
 inline constexpr double kForceRatioLambda = 1e-2;

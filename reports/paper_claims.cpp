@@ -391,7 +391,6 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
       if (crossover_fitted(*g)) continue;
       for (const Series* s : g->finite) {
         if (!s->fit) continue;
-        const double d = s->dimension;
         if (theta < 90 && right != by_theta.end() && !crossover_fitted(*right->second)) {
           for (const Series* r : right->second->finite) {
             if (!r->fit || !same_lambda(r->lambda, s->lambda)) continue;
@@ -418,8 +417,7 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
         }
         const std::optional<double> lambda_c = paper_lambda_c_at_angle(s->dimension, theta);
         if (!lambda_c) continue;
-        const double x = std::log10(s->lambda / *lambda_c);
-        const double lo = std::min(d - 1, d - 1 - std::tanh(x) / 2), hi = std::max(d - 1, d - 1 - std::tanh(x) / 2);
+        const auto [lo, hi] = paper_beta_interval(s->dimension, s->lambda, *lambda_c);
         ClaimCheck c;
         c.claim = "Fig. 6a at one lambda: beta lies on the side of the midpoint d - 1 that the paper's lambda_c(theta_w) puts "
                   "it (Eq. 2 with its plateaus and 0 < 1/b < 1)";

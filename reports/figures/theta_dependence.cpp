@@ -162,9 +162,8 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                                           " (d = " + std::to_string(d) + "): theta_w beta_mid beta_low beta_high lambda_c");
           for (const double theta : {20.0, 30.0, 90.0})
             if (const auto lc = paper_lambda_c_at_angle(d, theta)) {
-              const double edge = d - 1 - std::tanh(std::log10(lambda / *lc)) / 2;
-              f.data << num(theta) << " " << num(d - 1) << " " << num(std::min(d - 1.0, edge)) << " "
-                     << num(std::max(d - 1.0, edge)) << " " << num(*lc) << "\n";
+              const auto [low, high] = paper_beta_interval(d, lambda, *lc);
+              f.data << num(theta) << " " << num(d - 1) << " " << num(low) << " " << num(high) << " " << num(*lc) << "\n";
             }
           paper_intervals[{d, lambda}] = block;
           third_plots << (third_plots.tellp() > 0 ? ", \\\n     " : "plot ") << "DATA index " << block

@@ -370,7 +370,9 @@ bool same_lambda(double a, double b) { return std::fabs(std::log10(a / b)) < 1e-
 /// Fig. 6a read at one lambda, for the groups without a crossover fit (a campaign of one lambda
 /// and a few widths per angle: a DP beta(lambda) at every angle is a cluster campaign). lambda_c
 /// falls as theta_w falls, so the sigmoid moves to smaller lambda and, at a lambda two angles
-/// share, beta falls with theta_w: beta(theta_w) - beta(90), a direction judged beyond
+/// share, beta falls with theta_w: beta(theta_w) - beta(90), whether or not 90 deg has enough
+/// lambdas for a crossover fit of its own (its series' beta at that lambda is compared, not
+/// its sigmoid), a direction judged beyond
 /// kClaimAgreeSigmas sigma. And where the paper states lambda_c(theta_w), its Eq. 2 with the
 /// plateaus d - 1/2, d - 3/2 and its 0 < 1/b < 1 puts beta(lambda) between d - 1 (1/b -> 0)
 /// and d - 1 - tanh(log10(lambda / lambda_c)) / 2 (1/b = 1): above the midpoint d - 1 where
@@ -391,7 +393,7 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
       if (crossover_fitted(*g)) continue;
       for (const Series* s : g->finite) {
         if (!s->fit) continue;
-        if (theta < 90 && right != by_theta.end() && !crossover_fitted(*right->second)) {
+        if (theta < 90 && right != by_theta.end()) {
           for (const Series* r : right->second->finite) {
             if (!r->fit || !same_lambda(r->lambda, s->lambda)) continue;
             ClaimCheck c;

@@ -57,7 +57,9 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     std::string name;
     std::map<double, const Crossover*> fitted;          // theta_w -> its group with a crossover fit
     std::map<double, ForceRatioAtLambda> ratio;         // theta_w -> its group's force ratio
-    // lambda -> theta_w -> the fitted series at that lambda of a group without a crossover fit
+    // lambda -> theta_w -> the series at that lambda, at the lambdas where some group has no
+    // crossover fit (its beta there is all it has); a fitted group's series at such a lambda is
+    // drawn beside it
     std::map<double, std::map<double, const Series*>> one_lambda;
     bool any_one_lambda() const {
       return std::any_of(one_lambda.begin(), one_lambda.end(), [](const auto& l) { return l.second.size() >= 2; });
@@ -73,6 +75,11 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
       if (!g->fit && !g->fit_free)
         for (const Series* s : g->finite) family.one_lambda[lambda_key(s->lambda)].emplace(theta, s);
     }
+    for (const auto& [theta, g] : by_theta)
+      if (g->fit || g->fit_free)
+        for (const Series* s : g->finite)
+          if (const auto at = family.one_lambda.find(lambda_key(s->lambda)); at != family.one_lambda.end())
+            at->second.emplace(theta, s);
     if (!family.shown()) continue;
     const Crossover& any = *by_theta.begin()->second;
     family.name = family_name(!any.finite.empty() ? *any.finite.front() : *any.unfitted.front());

@@ -340,11 +340,13 @@ TEST(PaperClaims, Fig6bForceRatiosOfTwoAnglesAreComparedWidthByWidthWhereTheySha
 
 TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfTheMidpoint) {
   // one fitted series at lambda = 1e-2 per angle and no crossover fit (family E); family F has
-  // a crossover fit (its lambda_c is checked instead); family G's 20 deg fit is not determined
+  // a crossover fit (its lambda_c is checked instead); family G's 20 deg fit is not determined;
+  // family H has a crossover fit at 90 deg only (more lambdas there), none at 60
   CampaignFits fits;
   const std::vector<std::tuple<std::string, double, double, double>> at = {
       {"E", 90, 1.30, 1.5}, {"E", 60, 1.10, 1.5}, {"E", 30, 1.28, 1.5}, {"E", 20, 0.85, 1.5},
-      {"F", 90, 1.30, 1.5}, {"F", 20, 0.85, 1.5}, {"G", 90, 1.30, 1.5},  {"G", 20, 0.85, -0.5}};
+      {"F", 90, 1.30, 1.5}, {"F", 20, 0.85, 1.5}, {"G", 90, 1.30, 1.5},  {"G", 20, 0.85, -0.5},
+      {"H", 90, 1.40, 1.5}, {"H", 60, 1.15, 1.5}};
   fits.series.reserve(at.size());
   for (const auto& [family, theta, beta, k] : at) {
     Series s = series(family + " series", 2, 1e-2, beta, 0.05, 1, 0.05, k);
@@ -354,7 +356,7 @@ TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfT
     g.label = family;
     g.angle_family = family;
     g.finite = {&fits.series.back()};
-    if (family == "F") {
+    if (family == "F" || (family == "H" && theta == 90)) {
       CrossoverFit f;
       f.lambda_c = 0.05, f.log10_lambda_c = std::log10(0.05), f.log10_lambda_c_err = 0.1, f.lambda_c_err = 0.01;
       g.fit = f;
@@ -394,6 +396,12 @@ TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfT
   for (const ClaimCheck& c : checks)
     if (c.claim.rfind("Fig. 6a at one lambda", 0) == 0)
       EXPECT_NE(c.subject.rfind("F at", 0), 0u) << "a group with a crossover fit is read by its lambda_c";
+  // H: 60 deg has no sigmoid, so its beta is read against 90 deg's series at the same lambda
+  const ClaimCheck* h60 = find(checks, falls, "H at theta_w = 60, lambda = 0.01");
+  ASSERT_NE(h60, nullptr) << "a crossover fit at 90 deg must not hide the unfitted angles' beta";
+  EXPECT_NEAR(h60->measured, -0.25, 1e-12);
+  EXPECT_TRUE(h60->judged && h60->agrees) << h60->verdict;
+  EXPECT_EQ(find(checks, side, "H at theta_w = 90, lambda = 0.01"), nullptr) << "90 deg is read by its lambda_c";
   const ClaimCheck* g20 = find(checks, falls, "G at theta_w = 20, lambda = 0.01");
   ASSERT_NE(g20, nullptr);
   EXPECT_FALSE(g20->judged);

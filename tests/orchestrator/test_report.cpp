@@ -333,6 +333,42 @@ TEST(Report, Fig6aAtOneLambdaDrawsBetaAgainstTheAngleBesideThePapersIntervals) {
   fs::remove_all(dir);
 }
 
+TEST(Report, Fig6aAtOneLambdaKeepsAnUnfittedAngleBesideAFittedOne) {
+  // 90 deg has three lambdas (a crossover fit of its own), 60 deg only lambda = 1e-2: 60 deg's
+  // beta is still drawn and judged against 90 deg's series at 1e-2, not dropped with the fit
+  const json sweep = {
+      {"name", "fitted beside one lambda"},
+      {"base", {{"N", 400}, {"W", 25}}},
+      {"sweep",
+       {{"union",
+         {{{"product", {{{"theta_w_deg", {90}}}, {{"lambda", {1e-3, 1e-2, 0.1}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
+          {{"product", {{{"theta_w_deg", {60}}}, {{"lambda", {1e-2}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double w = j["w"], theta = j["theta_w_left_deg"], lambda = j["zeta"].get<double>() / j["mu"].get<double>();
+    const double Q = beverloo_model(w, 0.4, 1.0, theta == 90 ? crossover_model(2, lambda, 0.03, 0.8) : 1.0);
+    return converged_summary(Q, 0.01 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  const std::vector<std::string> rows = block_rows(theta, "lambda = 0.01: theta_w beta beta_err beta_replica_spread");
+  ASSERT_EQ(rows.size(), 2u) << theta;
+  const double beta90 = crossover_model(2, 1e-2, 0.03, 0.8);
+  for (const std::string& line : rows) {
+    std::istringstream in(line);
+    double angle, beta;
+    in >> angle >> beta;
+    EXPECT_NEAR(beta, angle == 90 ? beta90 : 1.0, 1e-6) << line;
+  }
+  EXPECT_TRUE(block_rows(theta, "lambda = 0.001: theta_w beta").empty()) << "no unfitted angle has lambda = 1e-3";
+  const std::string claims = read(out / "paper_claims.md");
+  // beta(90, 1e-2) = 1 + tanh(1.25 log10(3)) / 2 = 1.267: 60 deg's 1.0 lies 0.27 below
+  EXPECT_NE(claims.find("at theta_w = 60, lambda = 0.01 | < 0 (lambda_c 5e-2 at 90 deg, 6e-3 at 20) | -0.27"),
+            std::string::npos)
+      << claims;
+  fs::remove_all(dir);
+}
+
 TEST(Report, LambdaCBarsOfFig6TakeTheReplicasSpreadWhenItIsTheLarger) {
   // three replicas whose own sigmoids have lambda_c = 0.03, 0.05, 0.08 (b = 0.8) at both angles:
   // the spread of log10 lambda_c over them, 0.213 decades, is far above the pooled fit's error,

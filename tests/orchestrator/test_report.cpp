@@ -40,6 +40,19 @@ std::vector<std::string> block_rows(const std::string& data, const std::string& 
   return rows;
 }
 
+/// The report's Fig. 6a-at-one-lambda panel as drawn: theta_w -> (beta, beta_err) at the
+/// lambda written as lambda_text, from lambda_c_vs_theta.dat
+std::map<double, std::pair<double, double>> one_lambda_betas(const std::string& theta_dat, const std::string& lambda_text) {
+  std::map<double, std::pair<double, double>> at;
+  for (const std::string& line : block_rows(theta_dat, "lambda = " + lambda_text + ": theta_w beta beta_err")) {
+    std::istringstream in(line);
+    double angle, beta, beta_err;
+    in >> angle >> beta >> beta_err;
+    at[angle] = {beta, beta_err};
+  }
+  return at;
+}
+
 /// A converged run's summary: Q with its error and fixed other observables.
 json converged_summary(double Q, double Q_err, double force_ratio = 0.5) {
   return {{"status", "converged"}, {"Q", Q}, {"Q_err", Q_err}, {"Q_rel_err", Q_err / Q},
@@ -62,6 +75,18 @@ fs::path campaign_of(const json& sweep, SummaryOf summary_of) {
   const std::int64_t id = store.create_campaign(s, sweep.dump(), s.expand());
   while (auto job = store.claim_next(id, "local", "test"))
     store.ingest_success(*job, summary_of(json::parse(job->job_json)).dump(), {}, {}, {});
+  return dir;
+}
+
+/// A campaign of the sweep whose runs follow Q = 0.4 (w - 1)^beta_of(job json) exactly (1 %
+/// errors), with its report written to dir / "report".
+template <class BetaOf>
+fs::path reported_campaign_of(const json& sweep, BetaOf beta_of) {
+  const fs::path dir = campaign_of(sweep, [&](const json& j) {
+    const double Q = beverloo_model(j["w"].get<double>(), 0.4, 1.0, beta_of(j));
+    return converged_summary(Q, 0.01 * Q);
+  });
+  write_report(dir.string(), (dir / "report").string());
   return dir;
 }
 
@@ -289,22 +314,14 @@ TEST(Report, Fig6aAtOneLambdaDrawsBetaAgainstTheAngleBesideThePapersIntervals) {
   const json sweep = {{"name", "one lambda"},
                       {"base", {{"N", 400}, {"W", 25}}},
                       {"sweep", {{"product", {{{"theta_w_deg", {90, 30}}}, {{"lambda", {1e-2}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
-  const fs::path dir = campaign_of(sweep, [](const json& j) {
-    const double w = j["w"], theta = j["theta_w_left_deg"];
-    const double Q = beverloo_model(w, 0.4, 1.0, theta == 90 ? 1.3 : 0.9);
-    return converged_summary(Q, 0.01 * Q);
-  });
+  const fs::path dir = reported_campaign_of(sweep, [](const json& j) { return j["theta_w_left_deg"] == 90 ? 1.3 : 0.9; });
   const fs::path out = dir / "report";
-  write_report(dir.string(), out.string());
   const std::string theta = read(out / "lambda_c_vs_theta.dat");
-  const std::vector<std::string> rows = block_rows(theta, "lambda = 0.01: theta_w beta beta_err beta_replica_spread");
-  ASSERT_EQ(rows.size(), 2u) << theta;
-  for (const std::string& line : rows) {
-    std::istringstream in(line);
-    double angle, beta, beta_err;
-    in >> angle >> beta >> beta_err;
-    EXPECT_NEAR(beta, angle == 90 ? 1.3 : 0.9, 1e-6) << line;
-    EXPECT_GT(beta_err, 0) << line;
+  const auto betas = one_lambda_betas(theta, "0.01");
+  ASSERT_EQ(betas.size(), 2u) << theta;
+  for (const auto& [angle, beta] : betas) {
+    EXPECT_NEAR(beta.first, angle == 90 ? 1.3 : 0.9, 1e-6) << angle;
+    EXPECT_GT(beta.second, 0) << angle;
   }
   // the paper's intervals: 1 .. 1 + tanh(0.699) / 2 at 90 deg (lambda_c 5e-2), 1 - tanh(0.301) / 2
   // .. 1 at 30 (the plateau ~5e-3), and at 20 deg (6e-3)
@@ -343,24 +360,17 @@ TEST(Report, Fig6aAtOneLambdaKeepsAnUnfittedAngleBesideAFittedOne) {
        {{"union",
          {{{"product", {{{"theta_w_deg", {90}}}, {{"lambda", {1e-3, 1e-2, 0.1}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
           {{"product", {{{"theta_w_deg", {60}}}, {{"lambda", {1e-2}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}}}}};
-  const fs::path dir = campaign_of(sweep, [](const json& j) {
-    const double w = j["w"], theta = j["theta_w_left_deg"], lambda = j["zeta"].get<double>() / j["mu"].get<double>();
-    const double Q = beverloo_model(w, 0.4, 1.0, theta == 90 ? crossover_model(2, lambda, 0.03, 0.8) : 1.0);
-    return converged_summary(Q, 0.01 * Q);
+  const fs::path dir = reported_campaign_of(sweep, [](const json& j) {
+    const double lambda = j["zeta"].get<double>() / j["mu"].get<double>();
+    return j["theta_w_left_deg"] == 90 ? crossover_model(2, lambda, 0.03, 0.8) : 1.0;
   });
   const fs::path out = dir / "report";
-  write_report(dir.string(), out.string());
   const std::string theta = read(out / "lambda_c_vs_theta.dat");
-  const std::vector<std::string> rows = block_rows(theta, "lambda = 0.01: theta_w beta beta_err beta_replica_spread");
-  ASSERT_EQ(rows.size(), 2u) << theta;
-  const double beta90 = crossover_model(2, 1e-2, 0.03, 0.8);
-  for (const std::string& line : rows) {
-    std::istringstream in(line);
-    double angle, beta;
-    in >> angle >> beta;
-    EXPECT_NEAR(beta, angle == 90 ? beta90 : 1.0, 1e-6) << line;
-  }
-  EXPECT_TRUE(block_rows(theta, "lambda = 0.001: theta_w beta").empty()) << "no unfitted angle has lambda = 1e-3";
+  const auto betas = one_lambda_betas(theta, "0.01");
+  ASSERT_EQ(betas.size(), 2u) << theta;
+  EXPECT_NEAR(betas.at(90).first, crossover_model(2, 1e-2, 0.03, 0.8), 1e-6);
+  EXPECT_NEAR(betas.at(60).first, 1.0, 1e-6);
+  EXPECT_TRUE(one_lambda_betas(theta, "0.001").empty()) << "no unfitted angle has lambda = 1e-3";
   const std::string claims = read(out / "paper_claims.md");
   // beta(90, 1e-2) = 1 + tanh(1.25 log10(3)) / 2 = 1.267: 60 deg's 1.0 lies 0.27 below
   EXPECT_NE(claims.find("at theta_w = 60, lambda = 0.01 | < 0 (lambda_c 5e-2 at 90 deg, 6e-3 at 20) | -0.27"),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "core/digest.h"
@@ -56,6 +57,24 @@ void replica_spread(Crossover& g, const std::vector<double>& lambda) {
   g.spread_free = {static_cast<int>(log_lc_free.size()), sample_sd(log_lc_free), sample_sd(b_free)};
 }
 
+/// A crossover fit whose covariance is singular (b's or lambda_c's error 0, or not finite) is
+/// not a measurement: a step too sharp for the lambdas (b -> 0) puts lambda_c wherever the one
+/// point on the step is matched, with an error that says nothing. Such a fit is dropped with a
+/// message saying why; the group is then read at each lambda (Fig. 6a at one lambda).
+void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message) {
+  if (!fit) return;
+  const bool determined = fit->b_err > 0 && std::isfinite(fit->b_err) && fit->log10_lambda_c_err > 0 &&
+                          std::isfinite(fit->log10_lambda_c_err);
+  if (determined) return;
+  char b[200];
+  std::snprintf(b, sizeof b,
+                "not determined: a singular fit (lambda_c %.3g, b %.3g with no error): the lambdas do not resolve the "
+                "step's width",
+                fit->lambda_c, fit->b);
+  message = b;
+  fit.reset();
+}
+
 /// Sorts a crossover group's finite-lambda series and fits the sigmoid to their beta.
 void fit_group(Crossover& g) {
   std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
@@ -75,6 +94,8 @@ void fit_group(Crossover& g) {
   } catch (const FitError& err) {
     g.message_free = err.what();
   }
+  drop_if_degenerate(g.fit, g.message);
+  drop_if_degenerate(g.fit_free, g.message_free);
   replica_spread(g, l);
 }
 }  // namespace

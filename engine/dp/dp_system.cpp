@@ -206,8 +206,10 @@ void DpSystem::check_vertices(double t) const {
     throw InstabilityError(m.str());
   }
   // A polygon may wrap around an orifice corner (walls are lines), with vertices under the
-  // floor; it has gone through a wall only if one of its edges cuts one. Vertices beyond the
-  // side walls are outside the container.
+  // floor, or under a sloped funnel wall above the orifice plane (Hopper::beneath_funnel_wall;
+  // engine 0.6.3: before, such a vertex of a polygon leaving a 20 deg funnel stopped the run as
+  // "outside the container"); it has gone through a wall only if one of its edges cuts one.
+  // Vertices beyond the side walls are outside the container.
   // thick walls (dp.wall_thickness): a vertex may be inside a wall; it is through only past the slab (FunnelCores::crossed)
   const FunnelCores& cores = ff_->funnel_cores();
   const bool thick = cores.half_thickness() > 0;
@@ -215,8 +217,8 @@ void DpSystem::check_vertices(double t) const {
     const Vec<2>& x = verts_.x[i];
     const Vec<2>& next = verts_.x[poly_.next[i]];
     const int wall = thick ? cores.crossed(x, next) : hopper_.funnel_wall_crossed(x, next);
-    const bool outside =
-        !hopper_.contains(x) && !(thick && inside_a_wall(cores, hopper_, x, 0.5 * shape_.wall[verts_.species[i]]));
+    const bool outside = !hopper_.contains(x) && !hopper_.beneath_funnel_wall(x) &&
+                         !(thick && inside_a_wall(cores, hopper_, x, 0.5 * shape_.wall[verts_.species[i]]));
     if (outside || wall >= 0) {
       std::ostringstream msg;
       msg << "polygon " << poly_.owner[i] << " went through a wall at t = " << t << ": ";

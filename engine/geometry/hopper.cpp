@@ -62,6 +62,18 @@ bool Hopper<2>::contains(const Vec<2>& p) const {
   return x > left && x < right;
 }
 
+bool Hopper<2>::beneath_funnel_wall(const Vec<2>& p) const {
+  if (p[1] < 0) return false;  // below the orifice plane: contains() takes it
+  for (int k = 0; k < 2; ++k) {
+    const Segment& s = seg_[k];
+    if (s.length <= 0 || std::isinf(s.length)) continue;  // absent, or vertical (a ray)
+    const double x_end = s.a[0] + s.length * s.u[0];      // where the wall meets its side wall
+    const bool in_span = k == 0 ? (p[0] < s.a[0] && p[0] > x_end) : (p[0] > s.a[0] && p[0] < x_end);
+    if (in_span && (p - s.a).dot(funnel_inward_normal(k)) < 0) return true;
+  }
+  return false;
+}
+
 int Hopper<2>::funnel_wall_crossed(const Vec<2>& p, const Vec<2>& q) const {
   if (std::min(p[1], q[1]) > funnel_top() || std::max(p[1], q[1]) < 0) return -1;  // the funnels lie in 0 <= y <= top
   for (int k = 0; k < 2; ++k) {

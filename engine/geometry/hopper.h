@@ -56,6 +56,13 @@ class Hopper<2> {
   }
   /// True if p lies inside the container (between the walls) or below the orifice plane.
   bool contains(const Vec<2>& p) const;
+  /// True if p lies under a sloped funnel wall: above the orifice plane, beyond the wall's line
+  /// and within its horizontal span (between its orifice edge and the side wall). Outside the
+  /// container, but reached from below the orifice plane without crossing a wall: a polygon
+  /// leaving the orifice may wrap around its edge, and under a funnel steeper than flat its
+  /// vertices rise above y = 0 there (a flat floor's underside is y < 0, which contains()
+  /// takes). A vertical wall has no underside (it spans no x).
+  bool beneath_funnel_wall(const Vec<2>& p) const;
   /// The funnel wall (0 or 1) that the segment p -> q properly crosses, or -1: a polygon edge
   /// crossing a wall has been pierced by it (walls are lines without thickness, so a polygon
   /// may wrap around an orifice corner, but none of its edges may cut a wall).

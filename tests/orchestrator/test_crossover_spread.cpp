@@ -88,5 +88,44 @@ TEST(CrossoverSpread, AReplicaMissingFromOneLambdaIsLeftOutAndOneReplicaGivesNon
   EXPECT_EQ(lone_groups.front().spread.replicas, 0);
 }
 
+TEST(CrossoverFitOfAGroup, AStepSharperThanTheLambdasResolveIsNotDetermined) {
+  // three lambdas where the paper's sigmoid matches the one point on the step exactly as b -> 0,
+  // with a singular covariance: no lambda_c is reported
+  std::vector<Series> series;
+  const std::vector<std::pair<double, double>> at = {{1e-3, 1.5}, {1e-2, 1.2}, {1e-1, 0.5}};
+  for (const auto& [lambda, beta] : at) {
+    Series s;
+    s.dimension = 2, s.N = 1600, s.zeta = 1, s.mu = 1 / lambda, s.lambda = lambda;
+    s.key = "series lambda=" + std::to_string(lambda);
+    s.base_key = s.angle_free_key = "2D SP";
+    std::vector<RunRecord> runs;
+    for (double w = 4; w <= 10; w += 1) {
+      RunRecord run;
+      run.w = w;
+      run.Q = 5 * std::pow(w - 1.5, beta);
+      run.Q_err = 0.01 * run.Q;
+      runs.push_back(run);
+    }
+    fit_series(s, runs);
+    series.push_back(s);
+  }
+  // the exponents of the DP Fig. 6a campaign at 20 deg (docs/paper.md): the lowest lambda's
+  // free fit is undetermined (6.2 +- 6.5), the step between the other two is matched exactly
+  const double measured[3][2] = {{6.217, 6.5}, {1.198, 0.079}, {0.4734, 0.09}};
+  for (int i = 0; i < 3; ++i) series[i].fit->beta = measured[i][0], series[i].fit->beta_err = measured[i][1];
+  const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_FALSE(groups.front().fit) << "lambda_c " << groups.front().fit->lambda_c << " +- "
+                                   << groups.front().fit->lambda_c_err << ", b " << groups.front().fit->b << " +- "
+                                   << groups.front().fit->b_err;
+  EXPECT_EQ(groups.front().message.rfind("not determined: a singular fit", 0), 0u) << groups.front().message;
+  // a step the lambdas do resolve keeps its fit (the spread tests above), and so does this one
+  // with its middle exponent on a gentle slope
+  for (int i = 0; i < 3; ++i) series[i].fit->beta = crossover_model(2, at[i].first, 0.03, 0.8), series[i].fit->beta_err = 0.05;
+  const std::vector<Crossover> gentle = crossover_groups(series, base_jobs(series));
+  ASSERT_TRUE(gentle.front().fit) << gentle.front().message;
+  EXPECT_NEAR(gentle.front().fit->lambda_c, 0.03, 1e-4);
+}
+
 }  // namespace
 }  // namespace beverloo

@@ -192,7 +192,7 @@ TEST(Sweep, JobKeysAreStableGoldenValues) {
   const auto jobs = expand({{"base", {{"N", 400}, {"W", 25}, {"E_sp", 100}}},
                             {"sweep", {{"product", {{{"lambda", {0, "inf"}}}, {{"w", {3, 8}}}}}}}});
   EXPECT_EQ(jobs[0].key.size(), 64u);
-  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.6.2");
+  EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.6.3");
   EXPECT_EQ(jobs[0].key, "366122c025dfe66db4dcb363417d5dec25eb2052613f6c732d21f7e6439a9767");
 }
 

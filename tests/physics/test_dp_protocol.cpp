@@ -203,6 +203,46 @@ TEST(DpProtocol, PolygonDrapedAroundAnOrificeCornerIsNotThroughTheWall) {
   }
 }
 
+TEST(DpProtocol, APolygonLeavingASteepFunnelMayRiseUnderItsWallButNotCutIt) {
+  // Polygon 66 of a 20 deg, w = 4.2, lambda = 1e-3 run (the authors' corrected smooth set,
+  // engine 0.6.2, t = 11.70): wrapped around the left orifice edge while it falls out, vertex 3
+  // rising above the orifice plane under the sloped wall. 0.6.2 stopped the run there as
+  // "outside the container"; no edge cuts the wall, so the polygon has not gone through it.
+  // Coordinates relative to the left orifice edge (vertex 3 moved up from y = -0.0003).
+  const std::vector<Vec<2>> wrapped = {
+      {-0.03098, 0.25096}, {0.03408, 0.05308},  {-0.09891, -0.10489}, {-0.30422, 0.02},
+      {-0.46530, -0.20429}, {-0.49388, -0.41307}, {-0.35357, -0.51932}, {-0.15307, -0.57837},
+      {0.01845, -0.45343}, {0.17247, -0.31715},  {0.31113, -0.17594},  {0.43780, -0.02752},
+      {0.42767, 0.15945},  {0.34201, 0.34993},   {0.15243, 0.42169},   {0.03426, 0.41919}};
+  for (const double thickness : {0.0, 1.0}) {
+    SimConfig c = dp_config("dp_smooth", 2);
+    c.w = 4.2;
+    c.theta_w_left_deg = c.theta_w_right_deg = 20;
+    c.dp.wall_width = 1;
+    c.dp.wall_thickness = thickness;
+    c.resolve_and_validate();
+    const Hopper<2> h = make_hopper<2>(c);
+    DpSystem dp(c, h);
+    place_polygons(dp);
+    const int first = dp.polygons().first[0];
+    ASSERT_EQ(dp.polygons().first[1] - first, 16);
+    const Vec<2> edge = h.wall_start(0);
+    // 0.02 lower but vertex 3, so that with line walls too the polygon passes under the sharp
+    // orifice edge (the run's walls were thick, their lip rounded and T/2 behind the edge)
+    for (int k = 0; k < 16; ++k) dp.verts().x[first + k] = edge + wrapped[k] - Vec<2>(0, k == 3 ? 0.0 : 0.02);
+    ASSERT_FALSE(h.contains(dp.verts().x[first + 3]));
+    EXPECT_NO_THROW(dp.check_vertices(1.0)) << "wall thickness " << thickness;
+    // the same vertex reached from inside the funnel: its edge from vertex 2 cuts the wall
+    dp.verts().x[first + 2] = edge + Vec<2>(0.3, 0.3);
+    try {
+      dp.check_vertices(1.0);
+      FAIL() << "an edge cutting the funnel wall must stop the run (wall thickness " << thickness << ")";
+    } catch (const InstabilityError& e) {
+      EXPECT_NE(std::string(e.what()).find("cuts the left funnel wall"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(DpProtocol, AVertexPressedIntoAThickSideWallIsInItUntilItsDiskPassesTheCore) {
   // With walls of a thickness the side walls are half-spaces (their force grows beyond the
   // line): a vertex pressed in by a friction-only pile is pushed back, not gone through, until

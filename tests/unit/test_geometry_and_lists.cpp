@@ -83,6 +83,25 @@ TEST(Hopper2D, SymmetricWallsKeepTheContainerCentredOnTheOrifice) {
   for (int k = 0; k < 4; ++k) EXPECT_TRUE(h.has_wall(k));
 }
 
+TEST(Hopper2D, UnderASlopedFunnelWallIsOutsideYetNotBeyondTheWallsSpan) {
+  // 20 deg walls (from gravity) rise by cot(20 deg) = 2.75 per unit of x from the orifice edges
+  const Hopper<2> h(50, 4.2, units::deg_to_rad(20), units::deg_to_rad(20));
+  const Vec<2> under_left(-2.4, 0.02), under_right(2.4, 0.5), inside(-2.1, 0.5), beside_side_wall(-25.5, 60);
+  for (const Vec<2>& p : {under_left, under_right}) {
+    EXPECT_FALSE(h.contains(p)) << p.transpose();
+    EXPECT_TRUE(h.beneath_funnel_wall(p)) << p.transpose();
+  }
+  EXPECT_TRUE(h.contains(inside));
+  EXPECT_FALSE(h.beneath_funnel_wall(inside));
+  EXPECT_FALSE(h.beneath_funnel_wall(Vec<2>(-2.4, -0.02))) << "below the orifice plane is contains()'s";
+  EXPECT_FALSE(h.beneath_funnel_wall(beside_side_wall)) << "beyond the side wall is outside, not under the funnel";
+  // a flat floor's underside is below the plane; a vertical wall spans no x
+  const Hopper<2> flat(50, 4.2, units::pi / 2, units::pi / 2), vertical(50, 4.2, units::deg_to_rad(30), 0);
+  EXPECT_FALSE(flat.beneath_funnel_wall(Vec<2>(-3, 0.01)));
+  EXPECT_FALSE(vertical.beneath_funnel_wall(Vec<2>(2.3, 1.0)));
+  EXPECT_FALSE(vertical.contains(Vec<2>(2.3, 1.0)));
+}
+
 TEST(Hopper2D, SegmentsCuttingAFunnelWall) {
   const Hopper<2> h(50, 6, units::pi / 2, units::pi / 2);
   EXPECT_EQ(h.funnel_wall_crossed(Vec<2>(2.5, 0.5), Vec<2>(2.5, -0.5)), -1);  // through the orifice

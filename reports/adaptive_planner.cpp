@@ -140,7 +140,9 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       d.flowing_points = static_cast<int>(g.finite.size());
       out.push_back(std::move(d));
     };
-    if (!g.fit) {
+    // a singular fit is no measurement, but it places the step: new lambdas go there
+    const std::optional<CrossoverFit>& design_fit = g.fit ? g.fit : g.singular_fit;
+    if (!design_fit) {
       stop_group("the crossover cannot be fitted: " + g.message);
       continue;
     }
@@ -160,7 +162,7 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       CrossoverTargets t;
       t.log10_lambda_c_err = spec.log10_lambda_c_err;
       t.b_err = spec.b_err;
-      advice = next_lambda(g.dimension, *g.fit, lambda, beta_err, spec.lambda_lo, spec.lambda_hi, spec.per_decade, t);
+      advice = next_lambda(g.dimension, *design_fit, lambda, beta_err, spec.lambda_lo, spec.lambda_hi, spec.per_decade, t);
     } catch (const FitError& e) {
       stop_group(std::string("no design: ") + e.what());
       continue;

@@ -126,6 +126,10 @@ struct Crossover {
   const Series* limit_inf = nullptr;  ///< lambda = inf (drag only)
   std::optional<CrossoverFit> fit;
   std::string message;
+  /// A singular fit taken out of `fit` (not determined: its b or lambda_c has no error; crossover
+  /// groups' drop_if_degenerate): no measurement, but it says where the step is, which is where
+  /// the adaptive planner places its next lambda
+  std::optional<CrossoverFit> singular_fit;
   /// beta(lambda) with its plateaus free (fit_crossover_free_plateaus), beside the paper's fixed ones
   std::optional<CrossoverFit> fit_free;
   std::string message_free;

@@ -60,8 +60,10 @@ void replica_spread(Crossover& g, const std::vector<double>& lambda) {
 /// A crossover fit whose covariance is singular (b's or lambda_c's error 0, or not finite) is
 /// not a measurement: a step too sharp for the lambdas (b -> 0) puts lambda_c wherever the one
 /// point on the step is matched, with an error that says nothing. Such a fit is dropped with a
-/// message saying why; the group is then read at each lambda (Fig. 6a at one lambda).
-void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message) {
+/// message saying why (and kept in `singular`, when given, for the adaptive planner); the group
+/// is then read at each lambda (Fig. 6a at one lambda).
+void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message,
+                        std::optional<CrossoverFit>* singular = nullptr) {
   if (!fit) return;
   const bool determined = fit->b_err > 0 && std::isfinite(fit->b_err) && fit->log10_lambda_c_err > 0 &&
                           std::isfinite(fit->log10_lambda_c_err);
@@ -72,6 +74,7 @@ void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message) 
                 "step's width",
                 fit->lambda_c, fit->b);
   message = b;
+  if (singular) *singular = fit;
   fit.reset();
 }
 
@@ -94,7 +97,7 @@ void fit_group(Crossover& g) {
   } catch (const FitError& err) {
     g.message_free = err.what();
   }
-  drop_if_degenerate(g.fit, g.message);
+  drop_if_degenerate(g.fit, g.message, &g.singular_fit);
   drop_if_degenerate(g.fit_free, g.message_free);
   replica_spread(g, l);
 }

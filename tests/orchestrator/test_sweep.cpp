@@ -193,7 +193,7 @@ TEST(Sweep, JobKeysAreStableGoldenValues) {
                             {"sweep", {{"product", {{{"lambda", {0, "inf"}}}, {{"w", {3, 8}}}}}}}});
   EXPECT_EQ(jobs[0].key.size(), 64u);
   EXPECT_EQ(std::string(BEVERLOO_VERSION), "0.6.3");
-  EXPECT_EQ(jobs[0].key, "366122c025dfe66db4dcb363417d5dec25eb2052613f6c732d21f7e6439a9767");
+  EXPECT_EQ(jobs[0].key, "58015045e284f1652e51c873c88e1e8707728125f5d110be410ab15e942b9952");
 }
 
 TEST(Sweep, KeyIsSensitiveToEveryParameterButNotToRunBookkeeping) {

@@ -16,6 +16,20 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw IoError("HDF5: " + what); }
 
+/// The name of the file holding `loc` ("" if HDF5 cannot say), for an error message.
+std::string file_of(hid_t loc) {
+  const ssize_t n = H5Fget_name(loc, nullptr, 0);
+  if (n <= 0) return "";
+  std::string name(static_cast<std::size_t>(n) + 1, '\0');
+  H5Fget_name(loc, name.data(), name.size());
+  name.resize(static_cast<std::size_t>(n));
+  return name;
+}
+
+/// ": <the system's reason>" after a failed HDF5 call that reached the system (HDF5 leaves the
+/// errno of its open() or write(): ENOSPC on a full disk), else nothing.
+std::string system_reason() { return errno ? std::string(": ") + std::strerror(errno) : std::string(); }
+
 template <typename T>
 hid_t native_type();
 template <> hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
@@ -31,8 +45,12 @@ void write_impl(hid_t loc, const std::string& name, const std::vector<T>& data, 
   if (space.id() < 0) fail("dataspace for " + name);
   H5Handle dset(H5Dcreate2(loc, name.c_str(), native_type<T>(), space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
   if (dset.id() < 0) fail("create dataset " + name);
+  errno = 0;
   if (!data.empty() && H5Dwrite(dset, native_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
-    fail("write dataset " + name);
+    fail("cannot write dataset " + name + " of " + file_of(loc) + system_reason());
+  // the data written above may only reach the file here (the sieve buffer): a close that failed
+  // leaves a hole where the data belong, read back as zeros once the file grows past it
+  if (!dset.close()) fail("cannot write dataset " + name + " of " + file_of(loc) + system_reason());
 }
 
 template <typename T>
@@ -71,12 +89,6 @@ void init_library() {
   H5dont_atexit();  // must come before every other HDF5 call
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
 }
-
-namespace {
-/// ": <the system's reason>" after a failed HDF5 call that reached the system (HDF5 leaves the
-/// errno of its open() or write(): ENOSPC on a full disk), else nothing.
-std::string system_reason() { return errno ? std::string(": ") + std::strerror(errno) : std::string(); }
-}  // namespace
 
 H5Handle create_file(const std::string& path) {
   errno = 0;

@@ -34,6 +34,14 @@ class H5Handle {
     if (id_ >= 0 && close_) close_(id_);
     id_ = -1;
   }
+  /// Closes now and says whether HDF5 could (reset() ignores it, as a destructor must). A
+  /// dataset's raw data may still sit in HDF5's sieve buffer after H5Dwrite and reaches the file
+  /// only at H5Dclose: on a full disk that close is where the write fails.
+  bool close() {
+    const herr_t rc = id_ >= 0 && close_ ? close_(id_) : 0;
+    id_ = -1;
+    return rc >= 0;
+  }
 
  private:
   hid_t id_ = -1;

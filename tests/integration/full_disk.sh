@@ -18,20 +18,30 @@ cat > "$WORK/sweep.json" <<'J'
 J
 # One flow on file systems too small for its files: it ends with exit 0 or 4 (never a signal:
 # HDF5's clean-up at exit crashed after a failed write) and leaves no file under its own name
-# that cannot be read (a checkpoint whose flush failed was committed before 2026-12-04).
+# that cannot be read (a checkpoint whose flush failed was committed before 2026-12-04). Given
+# room, the same flow resumed gives the result of a run that never lacked room, bit for bit (a
+# checkpoint whose dataset's data failed to reach the disk at H5Dclose was committed with zeros
+# in its velocity profile before 2026-12-07; integration.full_disk caught it once in CI).
 echo '{"N": 300, "W": 12, "E_sp": 100, "w": 4, "zeta": 0.3, "mu": 0, "run": {"t_max": 200, "target_rel_err": 1e-9, "min_window": 20, "checkpoint_interval": 2}}' > "$WORK/one.json"
+"$BIN" simulate "$WORK/one.json" -o "$WORK/one_roomy" --progress quiet > /dev/null 2>&1 || fail "the flow failed with room"
+reference=$(result_data "$WORK/one_roomy/result.h5")
 SMALL=$WORK/small
 mkdir -p "$SMALL"
-for size in 40k 80k 120k 150k 180k 250k; do
+for size in 40k 80k 100k 120k 140k 150k 160k 170k 180k 250k; do
   mount -t tmpfs -o size=$size tmpfs "$SMALL"
   set +e; "$BIN" simulate "$WORK/one.json" -o "$SMALL/o" --progress quiet > /dev/null 2> "$WORK/small.err"; rc=$?; set -e
   for f in "$SMALL"/o/checkpoint.h5 "$SMALL"/o/result.h5; do
     [ ! -f "$f" ] || h5dump -H "$f" > /dev/null 2>&1 || { umount "$SMALL"; fail "$size: $(basename "$f") committed but unreadable (exit $rc)"; }
   done
+  [ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || { umount "$SMALL"; fail "$size: simulate ended with $rc, expected 0 or 4: $(tail -1 "$WORK/small.err")"; }
+  mount -o remount,size=64M "$SMALL"
+  "$BIN" simulate "$WORK/one.json" -o "$SMALL/o" --resume --progress quiet > /dev/null 2> "$WORK/small_resume.err" ||
+    { umount "$SMALL"; fail "$size: resuming with room failed: $(tail -1 "$WORK/small_resume.err")"; }
+  [ "$(result_data "$SMALL/o/result.h5")" = "$reference" ] ||
+    { umount "$SMALL"; fail "$size (exit $rc: $(tail -c 200 "$WORK/small.err")): resumed with room, the result differs from the run that never lacked room"; }
   umount "$SMALL"
-  [ "$rc" -eq 0 ] || [ "$rc" -eq 4 ] || fail "$size: simulate ended with $rc, expected 0 or 4: $(tail -1 "$WORK/small.err")"
 done
-echo "ok  one flow on file systems of 40k .. 250k: exit 0 or 4, no unreadable file committed"
+echo "ok  one flow on file systems of 40k .. 250k: exit 0 or 4, no unreadable file committed, resumed with room bit-identical"
 
 results() { sqlite3 "$1/campaign.sqlite" "SELECT job_key, status, printf('%!.17g|%!.17g', Q, Q_err), steps FROM results ORDER BY job_key"; }
 "$BIN" run "$WORK/sweep.json" --dir "$WORK/clean" --workers 2 --progress quiet 2> /dev/null
@@ -57,7 +67,10 @@ echo "ok  disk full with $done_before of 8 jobs done: exit 4, the database intac
 
 mount -o remount,size=64M "$DISK"
 "$BIN" run "$WORK/sweep.json" --dir "$DISK/c" --workers 2 --progress quiet 2> "$WORK/after.log" || { tail "$WORK/after.log"; fail "the campaign did not finish once there was room"; }
-[ "$(results "$DISK/c")" = "$clean" ] || fail "results differ from the campaign that never lacked room"
+after=$(results "$DISK/c")
+[ "$after" = "$clean" ] || { diff <(echo "$clean") <(echo "$after") >&2 || true
+  sqlite3 "$DISK/c/campaign.sqlite" "SELECT job_key, state, failure_class, message FROM attempts ORDER BY id" >&2
+  fail "results differ from the campaign that never lacked room (above: < without, > after the full disk)"; }
 [ "$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM attempts WHERE state = 'succeeded'")" -eq 8 ] || fail "a job succeeded twice"
 [ "$(sqlite3 "$DISK/c/campaign.sqlite" "SELECT count(*) FROM jobs WHERE state <> 'done'")" -eq 0 ] || fail "jobs not done"
 left=$(find "$DISK" -name '*.tmp*' | head -3)

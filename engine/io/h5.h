@@ -49,7 +49,13 @@ class H5Handle {
 };
 
 namespace h5 {
-H5Handle create_file(const std::string& path);  ///< truncates
+/// Checksummed: the HDF5 1.10 format, whose headers and indexes carry checksums (h5.cpp), for a
+/// file written whole and then renamed into place. Appendable: the library's earliest format,
+/// for a file kept open for writing across a run that may be killed (the trajectory): the 1.10
+/// format marks a file open for writing in its superblock, and after a kill HDF5 refuses to
+/// reopen it until `h5clear -s`, which would lose a resumed run's earlier frames.
+enum class FileFormat { Checksummed, Appendable };
+H5Handle create_file(const std::string& path, FileFormat format = FileFormat::Checksummed);  ///< truncates
 /// Writes everything of `file` to the disk; throws IoError naming `path` if that fails (a full
 /// disk): a file whose flush failed is incomplete and must not be committed under its name.
 void flush(hid_t file, const std::string& path);

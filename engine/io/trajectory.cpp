@@ -16,6 +16,7 @@ H5Handle extendible(hid_t loc, const std::string& name, hid_t type, std::vector<
   H5Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max.data()), H5Sclose);
   H5Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_chunk(plist, static_cast<int>(chunk.size()), chunk.data());
+  H5Pset_fletcher32(plist);  // a damaged frame fails to read (h5.cpp, write_impl)
   H5Handle d(H5Dcreate2(loc, name.c_str(), type, space, H5P_DEFAULT, plist, H5P_DEFAULT), H5Dclose);
   if (d.id() < 0) throw IoError("HDF5: create " + name);
   return d;
@@ -76,7 +77,7 @@ H5mdTrajectory<D>::H5mdTrajectory(const std::string& path, const SimConfig& c, c
 template <int D>
 void H5mdTrajectory<D>::create(const std::string& path, const SimConfig& c, const ParticleState<D>& s,
                                double box_height) {
-  file_ = h5::create_file(path);
+  file_ = h5::create_file(path, h5::FileFormat::Appendable);  // reopened to append after a kill (h5.h)
   {
     H5Handle h5md = h5::create_group(file_, "h5md");
     h5::attr(h5md, "version", std::vector<std::int32_t>{1, 1});

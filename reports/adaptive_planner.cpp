@@ -140,8 +140,9 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       d.flowing_points = static_cast<int>(g.finite.size());
       out.push_back(std::move(d));
     };
-    // a singular fit is no measurement, but it places the step: new lambdas go there
-    const std::optional<CrossoverFit>& design_fit = g.fit ? g.fit : g.singular_fit;
+    // a singular fit, or one that takes series without a Beverloo law, is no measurement, but it
+    // places the step: new lambdas go there
+    const std::optional<CrossoverFit>& design_fit = g.fit ? g.fit : g.design_fit;
     if (!design_fit) {
       stop_group("the crossover cannot be fitted: " + g.message);
       continue;
@@ -149,7 +150,11 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
     std::vector<double> lambda, beta_err;
     for (const Series* s : g.finite) {
       lambda.push_back(s->lambda);
-      beta_err.push_back(s->fit->beta_err);
+      // a series that follows no Beverloo law is not in the crossover fit: its lambda is taken,
+      // but it tells the design nothing (error 0, as below); the design fit takes it, and so
+      // does the design made from it
+      const bool in_fit = !g.fit || std::find(g.no_beverloo_law.begin(), g.no_beverloo_law.end(), s) == g.no_beverloo_law.end();
+      beta_err.push_back(in_fit ? s->fit->beta_err : 0);
     }
     // a series the group has but cannot fit still holds its lambda: no information (error 0),
     // but no new series there (it would be the same jobs again, and the group would add nothing)

@@ -45,11 +45,16 @@ std::string fit_quality(const Series& s) {
     std::snprintf(b, sizeof b, "not determined: beta's error is %.0f %%", 100 * rel);
     return b;
   }
+  if (follows_no_beverloo_law(s)) return "not determined: k outside [0, smallest w]";
+  return "ok";
+}
+
+bool follows_no_beverloo_law(const Series& s) {
+  if (!s.fit) return false;
   double w_min = INFINITY;
   for (const auto& p : s.points)
     if (p.flowing()) w_min = std::min(w_min, p.w);
-  if (s.fit->k < 0 || s.fit->k >= w_min) return "not determined: k outside [0, smallest w]";
-  return "ok";
+  return s.fit->k < 0 || s.fit->k >= w_min;
 }
 
 int Series::clogged_points() const {
@@ -203,7 +208,7 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       "UPDATE crossover_fit_results SET replica_fits = ?2, log10_lambda_c_replica_spread = ?3, b_replica_spread = ?4, "
       "free_replica_fits = ?5, free_log10_lambda_c_replica_spread = ?6, free_b_replica_spread = ?7 WHERE group_key = ?1");
   for (const Crossover& g : fits.crossovers) {
-    cx.bind(1, g.key).bind(2, g.label).bind(3, g.dimension).bind(4, static_cast<int>(g.finite.size()));
+    cx.bind(1, g.key).bind(2, g.label).bind(3, g.dimension).bind(4, g.fitted_points());
     if (g.fit)
       cx.bind(5, g.fit->lambda_c).bind(6, g.fit->lambda_c_err).bind(7, g.fit->b).bind(8, g.fit->b_err).bind(9, g.fit->chi2_red);
     else
@@ -266,14 +271,14 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   for (const Crossover& g : fits.crossovers) {
     const std::string b0 = g.limit0 && g.limit0->fit ? fmt(g.limit0->fit->beta) : "";
     const std::string binf = g.limit_inf && g.limit_inf->fit ? fmt(g.limit_inf->fit->beta) : "";
-    xcsv << csv_field(g.label) << ',' << g.dimension << ',' << g.finite.size() << ',';
+    xcsv << csv_field(g.label) << ',' << g.dimension << ',' << g.fitted_points() << ',';
     if (g.fit)
       xcsv << fmt(g.fit->lambda_c, 8) << ',' << fmt(g.fit->lambda_c_err, 4) << ',' << fmt(g.fit->b, 8) << ','
            << fmt(g.fit->b_err, 4) << ',' << fmt(g.fit->chi2_red, 4);
     else
       xcsv << ",,,,";
     xcsv << ',' << b0 << ',' << binf << ',' << csv_field(g.message) << "\n";
-    xmd << "| " << markdown_cell(g.label) << " | " << g.finite.size() << " | ";
+    xmd << "| " << markdown_cell(g.label) << " | " << g.fitted_points() << " | ";
     if (g.fit)
       xmd << fmt(g.fit->lambda_c) << " ± " << fmt(g.fit->lambda_c_err, 2) << " | " << fmt(g.fit->b) << " ± "
           << fmt(g.fit->b_err, 2) << " | " << fmt(g.fit->chi2_red, 3);
@@ -338,7 +343,7 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   fmd << "| group | lambda_c (plateaus 1/2, 3/2 from d) | chi2_red | lambda_c (plateaus free) | b | beta(0) fitted | "
          "beta(inf) fitted | chi2_red | beta(0), beta(inf) measured |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Crossover& g : fits.crossovers) {
-    fcsv << csv_field(g.label) << ',' << g.finite.size() << ',';
+    fcsv << csv_field(g.label) << ',' << g.fitted_points() << ',';
     if (g.fit)
       fcsv << fmt(g.fit->lambda_c, 8) << ',' << fmt(g.fit->lambda_c_err, 4) << ',' << fmt(g.fit->b, 8) << ','
            << fmt(g.fit->b_err, 4) << ',' << fmt(g.fit->chi2_red, 4) << ',';

@@ -109,6 +109,11 @@ struct Series {
 inline constexpr double kBetaDeterminedRelErr = 0.25;
 /// "ok", or "not determined: ..." naming why (beta's relative error; k outside [0, smallest w]).
 std::string fit_quality(const Series& s);
+/// True if the series' free fit puts k outside [0, smallest flowing w]: its Q(w) follows no
+/// Beverloo law (it curves more than any with k >= 0 can, or k sits at the smallest width), so
+/// its beta is no Beverloo exponent, however small its error. (A beta with a large error is
+/// still one, and a weighted fit can take it.)
+bool follows_no_beverloo_law(const Series& s);
 
 struct Crossover {
   std::string key, label;
@@ -117,6 +122,12 @@ struct Crossover {
   std::string angle_family;
   int dimension = 2;
   std::vector<const Series*> finite;  ///< the finite lambda > 0 series with a fit, by lambda
+  /// those of `finite` whose Q(w) follows no Beverloo law (follows_no_beverloo_law: k outside
+  /// [0, smallest w]): drawn and listed, but not in the crossover fits, whose sigmoid is a law
+  /// for Beverloo exponents (a beta with a large error stays in, weighted by it)
+  std::vector<const Series*> no_beverloo_law;
+  /// the series the crossover fits take: `finite` without `no_beverloo_law`
+  int fitted_points() const { return static_cast<int>(finite.size() - no_beverloo_law.size()); }
   /// the finite lambda of its series without a fit (too few flowing widths): a lambda the group
   /// has, where the adaptive planner must not place a new series again
   std::vector<double> unfitted_lambda;
@@ -126,10 +137,11 @@ struct Crossover {
   const Series* limit_inf = nullptr;  ///< lambda = inf (drag only)
   std::optional<CrossoverFit> fit;
   std::string message;
-  /// A singular fit taken out of `fit` (not determined: its b or lambda_c has no error; crossover
-  /// groups' drop_if_degenerate): no measurement, but it says where the step is, which is where
-  /// the adaptive planner places its next lambda
-  std::optional<CrossoverFit> singular_fit;
+  /// Where `fit` is missing, a fit that is no measurement but says where the step is, which is
+  /// where the adaptive planner places its next lambda: a singular fit taken out of `fit` (its b
+  /// or lambda_c has no error; crossover groups' drop_if_degenerate), or the fit that takes the
+  /// series of no_beverloo_law too when those without them are too few
+  std::optional<CrossoverFit> design_fit;
   /// beta(lambda) with its plateaus free (fit_crossover_free_plateaus), beside the paper's fixed ones
   std::optional<CrossoverFit> fit_free;
   std::string message_free;

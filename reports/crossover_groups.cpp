@@ -25,18 +25,18 @@ std::string angle_text(const Series& s) {
 
 /// The crossover's run-to-run spread (Crossover::spread): each replica that has its own free
 /// fit in every finite-lambda series is fitted alone, both ways, over the same lambdas.
-void replica_spread(Crossover& g, const std::vector<double>& lambda) {
-  if (g.finite.empty()) return;
+void replica_spread(Crossover& g, const std::vector<const Series*>& fitted, const std::vector<double>& lambda) {
+  if (fitted.empty()) return;
   std::set<int> replicas;
-  for (const auto& [replica, fit] : g.finite.front()->replica_fit) replicas.insert(replica);
-  for (const Series* s : g.finite)
+  for (const auto& [replica, fit] : fitted.front()->replica_fit) replicas.insert(replica);
+  for (const Series* s : fitted)
     for (auto it = replicas.begin(); it != replicas.end();)
       it = s->replica_fit.count(*it) ? std::next(it) : replicas.erase(it);
   if (replicas.size() < 2) return;
   std::vector<double> log_lc, b, log_lc_free, b_free;
   for (int replica : replicas) {
     std::vector<double> beta, beta_err;
-    for (const Series* s : g.finite) {
+    for (const Series* s : fitted) {
       beta.push_back(s->replica_fit.at(replica).beta);
       beta_err.push_back(s->replica_fit.at(replica).beta_err);
     }
@@ -78,28 +78,51 @@ void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message,
   fit.reset();
 }
 
-/// Sorts a crossover group's finite-lambda series and fits the sigmoid to their beta.
+/// Sorts a crossover group's finite-lambda series and fits the sigmoid to the beta of those
+/// that follow a Beverloo law (the others are set apart in no_beverloo_law, and a fit that fails
+/// for want of them says so).
 void fit_group(Crossover& g) {
   std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
+  std::vector<const Series*> fitted;
   std::vector<double> l, b, e;
   for (const Series* s : g.finite) {
+    if (follows_no_beverloo_law(*s)) {
+      g.no_beverloo_law.push_back(s);
+      continue;
+    }
+    fitted.push_back(s);
     l.push_back(s->lambda);
     b.push_back(s->fit->beta);
     e.push_back(s->fit->beta_err);
   }
+  std::string left_out;
+  for (const Series* s : g.no_beverloo_law) left_out += (left_out.empty() ? "" : ", ") + fmt(s->lambda, 3);
+  if (!left_out.empty()) left_out = " (left out, k outside [0, smallest w]: no Beverloo law at lambda = " + left_out + ")";
   try {
     g.fit = fit_crossover(g.dimension, l, b, e);
   } catch (const FitError& err) {
-    g.message = err.what();
+    g.message = err.what() + left_out;
   }
   try {
     g.fit_free = fit_crossover_free_plateaus(l, b, e);
   } catch (const FitError& err) {
-    g.message_free = err.what();
+    g.message_free = err.what() + left_out;
   }
-  drop_if_degenerate(g.fit, g.message, &g.singular_fit);
+  drop_if_degenerate(g.fit, g.message, &g.design_fit);
   drop_if_degenerate(g.fit_free, g.message_free);
-  replica_spread(g, l);
+  if (!g.fit && !g.design_fit && !g.no_beverloo_law.empty()) {
+    std::vector<double> all_l, all_b, all_e;
+    for (const Series* s : g.finite) {
+      all_l.push_back(s->lambda);
+      all_b.push_back(s->fit->beta);
+      all_e.push_back(s->fit->beta_err);
+    }
+    try {
+      g.design_fit = fit_crossover(g.dimension, all_l, all_b, all_e);
+    } catch (const FitError&) {
+    }
+  }
+  replica_spread(g, fitted, l);
 }
 }  // namespace
 

@@ -127,5 +127,40 @@ TEST(CrossoverFitOfAGroup, AStepSharperThanTheLambdasResolveIsNotDetermined) {
   EXPECT_NEAR(gentle.front().fit->lambda_c, 0.03, 1e-4);
 }
 
+TEST(CrossoverFitOfAGroup, ASeriesThatFollowsNoBeverlooLawStaysOutOfTheSigmoid) {
+  // six lambdas on the replicas' sigmoids; then the lowest one's fit made that of a Q(w) that
+  // follows no Beverloo law with k >= 0 (Fig. 6a's DP at 90 deg, lambda = 1e-3: beta 3.4 with
+  // k = -6), with a small error, so that taking it would pull the sigmoid far
+  std::vector<Series> series = three_replica_group(-1);
+  const std::vector<Crossover> intact = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(intact.size(), 1u);
+  ASSERT_TRUE(intact.front().fit && intact.front().fit_free);
+  EXPECT_TRUE(intact.front().no_beverloo_law.empty());
+  Series& odd = series.front();
+  ASSERT_EQ(odd.lambda, kLambdas.front());
+  odd.fit->beta = 3.4, odd.fit->beta_err = 0.06, odd.fit->k = -6;
+  ASSERT_TRUE(follows_no_beverloo_law(odd));
+  const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(groups.size(), 1u);
+  const Crossover& g = groups.front();
+  ASSERT_EQ(g.no_beverloo_law.size(), 1u);
+  EXPECT_EQ(g.no_beverloo_law.front(), &series.front());
+  EXPECT_EQ(g.finite.size(), kLambdas.size());  // still the group's, drawn and listed
+  EXPECT_EQ(g.fitted_points(), static_cast<int>(kLambdas.size()) - 1);
+  ASSERT_TRUE(g.fit) << g.message;
+  // the five others fix the fits: lambda_c within 0.05 decades of the intact group's, and the
+  // free plateau at lambda -> 0 is not pulled up towards the odd point's 3.4
+  EXPECT_NEAR(g.fit->log10_lambda_c, intact.front().fit->log10_lambda_c, 0.05);
+  ASSERT_TRUE(g.fit_free) << g.message_free;
+  EXPECT_NEAR(g.fit_free->beta_0, intact.front().fit_free->beta_0, 0.1);
+
+  // with too few series left the fit says why, naming the lambda left out
+  std::vector<Series> three(series.begin(), series.begin() + 3);
+  const std::vector<Crossover> few = crossover_groups(three, base_jobs(three));
+  ASSERT_EQ(few.size(), 1u);
+  EXPECT_FALSE(few.front().fit);
+  EXPECT_NE(few.front().message.find("no Beverloo law at lambda = 0.003"), std::string::npos) << few.front().message;
+}
+
 }  // namespace
 }  // namespace beverloo

@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "guarded.h"
 #include "core/failures.h"
+#include "core/version.h"
 
 namespace beverloo {
 namespace {

@@ -29,6 +29,7 @@
 #include "engine/json_file.h"
 #include "engine/parameters.h"
 #include "orchestrator/sweep/sweep.h"
+#include "core/version.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;

@@ -14,6 +14,7 @@
 #include "orchestrator/campaign/campaign_dir.h"
 #include "orchestrator/experiment/experiment_store.h"
 #include "core/text_escape.h"
+#include "core/version.h"
 
 namespace beverloo {
 namespace {

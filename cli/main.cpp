@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "engine/io/h5.h"
 #include "core/failures.h"
+#include "core/version.h"
 
 int main(int argc, char** argv) {
   beverloo::h5::init_library();

@@ -7,6 +7,7 @@
 #include "../protocol/hopper_run.h"
 #include "h5.h"
 #include "vec_io.h"
+#include "core/version.h"
 
 namespace beverloo {
 

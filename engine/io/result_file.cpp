@@ -8,6 +8,7 @@
 #include "../protocol/result_fields.h"
 
 #include "h5.h"
+#include "core/version.h"
 
 namespace beverloo {
 namespace {

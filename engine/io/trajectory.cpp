@@ -1,4 +1,5 @@
 #include "trajectory.h"
+#include "core/version.h"
 
 #include <filesystem>
 

@@ -28,6 +28,7 @@
 #include "core/text_escape.h"
 #include "orchestrator/db/migrations.h"
 #include "store.h"
+#include "core/version.h"
 
 namespace beverloo {
 namespace fs = std::filesystem;

@@ -5,6 +5,7 @@
 #include "orchestrator/db/typed_columns.h"
 
 #include "engine/parameters.h"
+#include "core/version.h"
 
 #include <unistd.h>
 

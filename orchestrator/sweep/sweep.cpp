@@ -7,6 +7,7 @@
 #include "core/digest.h"
 #include "engine/json_file.h"
 #include "engine/parameters.h"
+#include "core/version.h"
 
 
 #include <cctype>

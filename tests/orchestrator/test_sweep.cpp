@@ -7,6 +7,7 @@
 
 #include "engine/parameters.h"
 #include "orchestrator/sweep/sweep.h"
+#include "core/version.h"
 
 namespace beverloo {
 namespace {

@@ -388,9 +388,12 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
   };
   for (const auto& [family, by_theta] : angle_families(fits.crossovers, /*fitted_only=*/false)) {
     const auto right = by_theta.find(90.0);
+    // an angle with a sigmoid is read by its lambda_c against 90 deg's; without one at 90 deg
+    // there is no such ratio, and every angle is read at each lambda
+    const bool right_fitted = right != by_theta.end() && crossover_fitted(*right->second);
     for (auto it = by_theta.rbegin(); it != by_theta.rend(); ++it) {  // from the flat hopper down
       const auto& [theta, g] = *it;
-      if (crossover_fitted(*g)) continue;
+      if (crossover_fitted(*g) && right_fitted) continue;
       for (const Series* s : g->finite) {
         if (!s->fit) continue;
         if (theta < 90 && right != by_theta.end()) {

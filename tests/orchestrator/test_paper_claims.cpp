@@ -341,12 +341,14 @@ TEST(PaperClaims, Fig6bForceRatiosOfTwoAnglesAreComparedWidthByWidthWhereTheySha
 TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfTheMidpoint) {
   // one fitted series at lambda = 1e-2 per angle and no crossover fit (family E); family F has
   // a crossover fit (its lambda_c is checked instead); family G's 20 deg fit is not determined;
-  // family H has a crossover fit at 90 deg only (more lambdas there), none at 60
+  // family H has a crossover fit at 90 deg only (more lambdas there), none at 60; family I the
+  // reverse: a crossover fit at 30 deg, none at 90 (Fig. 6a's DP, whose 90 deg series at 1e-3
+  // follows no Beverloo law)
   CampaignFits fits;
   const std::vector<std::tuple<std::string, double, double, double>> at = {
       {"E", 90, 1.30, 1.5}, {"E", 60, 1.10, 1.5}, {"E", 30, 1.28, 1.5}, {"E", 20, 0.85, 1.5},
       {"F", 90, 1.30, 1.5}, {"F", 20, 0.85, 1.5}, {"G", 90, 1.30, 1.5},  {"G", 20, 0.85, -0.5},
-      {"H", 90, 1.40, 1.5}, {"H", 60, 1.15, 1.5}};
+      {"H", 90, 1.40, 1.5}, {"H", 60, 1.15, 1.5}, {"I", 90, 1.36, 1.5},  {"I", 30, 1.27, 1.5}};
   fits.series.reserve(at.size());
   for (const auto& [family, theta, beta, k] : at) {
     Series s = series(family + " series", 2, 1e-2, beta, 0.05, 1, 0.05, k);
@@ -356,7 +358,7 @@ TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfT
     g.label = family;
     g.angle_family = family;
     g.finite = {&fits.series.back()};
-    if (family == "F" || (family == "H" && theta == 90)) {
+    if (family == "F" || (family == "H" && theta == 90) || (family == "I" && theta == 30)) {
       CrossoverFit f;
       f.lambda_c = 0.05, f.log10_lambda_c = std::log10(0.05), f.log10_lambda_c_err = 0.1, f.lambda_c_err = 0.01;
       g.fit = f;
@@ -402,6 +404,13 @@ TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfT
   EXPECT_NEAR(h60->measured, -0.25, 1e-12);
   EXPECT_TRUE(h60->judged && h60->agrees) << h60->verdict;
   EXPECT_EQ(find(checks, side, "H at theta_w = 90, lambda = 0.01"), nullptr) << "90 deg is read by its lambda_c";
+  // I: no lambda_c at 90 deg to hold 30 deg's against, so 30 deg is read at its lambda too
+  const ClaimCheck* i30 = find(checks, falls, "I at theta_w = 30, lambda = 0.01");
+  ASSERT_NE(i30, nullptr) << "without a sigmoid at 90 deg a fitted angle must still be compared with it";
+  EXPECT_NEAR(i30->measured, -0.09, 1e-12);
+  EXPECT_EQ(i30->verdict.rfind("not resolved", 0), 0u) << i30->verdict;
+  EXPECT_NE(find(checks, side, "I at theta_w = 30, lambda = 0.01"), nullptr);
+  EXPECT_NE(find(checks, side, "I at theta_w = 90, lambda = 0.01"), nullptr);
   const ClaimCheck* g20 = find(checks, falls, "G at theta_w = 20, lambda = 0.01");
   ASSERT_NE(g20, nullptr);
   EXPECT_FALSE(g20->judged);

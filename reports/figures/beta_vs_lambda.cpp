@@ -36,11 +36,13 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
     auto left_out_of_fit = [&g](const Series* s) {
       return std::find(g.no_beverloo_law.begin(), g.no_beverloo_law.end(), s) != g.no_beverloo_law.end();
     };
-    const int points = f.begin_block(g.label + ": lambda beta beta_err");
-    for (const Series* s : g.finite)
-      if (!left_out_of_fit(s)) f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
-    f.plots.push_back("DATA index " + std::to_string(points) + " using 1:2:3 with yerrorbars " + style + " title " +
-                      gnuplot_string(g.label));
+    if (g.fitted_points() > 0) {  // (no empty block: gnuplot would have nothing to draw)
+      const int points = f.begin_block(g.label + ": lambda beta beta_err");
+      for (const Series* s : g.finite)
+        if (!left_out_of_fit(s)) f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
+      f.plots.push_back("DATA index " + std::to_string(points) + " using 1:2:3 with yerrorbars " + style + " title " +
+                        gnuplot_string(g.label));
+    }
     if (!g.no_beverloo_law.empty()) {  // drawn with open circles, but not in the sigmoid's fit
       const int left_out = f.begin_block(g.label + ": no Beverloo law (k outside [0, smallest w]), not fitted: lambda beta beta_err");
       for (const Series* s : g.no_beverloo_law)

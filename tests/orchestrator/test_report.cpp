@@ -2,6 +2,7 @@
 // its data and script; index.html references each; the fits recover the fixture's parameters.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -347,6 +348,29 @@ TEST(Report, Fig6aAtOneLambdaDrawsBetaAgainstTheAngleBesideThePapersIntervals) {
                           "at theta_w = 30, lambda = 0.01 | 0.854 .. 1 (lambda_c ~0.005) | 0.9"})
     EXPECT_NE(claims.find(row), std::string::npos) << row << " in\n" << claims;
   EXPECT_NE(claims.find("| agrees (falls, z = "), std::string::npos) << claims;
+  fs::remove_all(dir);
+}
+
+/// A beta(lambda) group whose every finite-lambda series follows no Beverloo law (Q grows as
+/// (w + 3)^beta: the free fit puts k at -3) has no sigmoid, says why, and is still drawn: open
+/// circles only, and no empty data block for gnuplot.
+TEST(Report, ABetaOfLambdaGroupWithoutABeverlooLawIsDrawnAndSaysWhy) {
+  const json sweep = {{"name", "no-law"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"lambda", {1e-3, 1e-2, 0.1, 1}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double Q = beverloo_model(j["w"].get<double>(), 0.4, -3.0, 1.5);
+    return converged_summary(Q, 0.01 * Q);
+  });
+  const fs::path out = dir / "report";
+  ASSERT_NO_THROW(write_report(dir.string(), out.string()));
+  const std::string md = read(out / "crossover_fits.md");
+  EXPECT_NE(md.find("no Beverloo law at lambda = 0.001, 0.01, 0.1, 1"), std::string::npos) << md;
+  ASSERT_TRUE(fs::exists(out / "beta_vs_lambda.svg"));
+  const std::string dat = read(out / "beta_vs_lambda.dat");
+  // one block, the points left out (a block of fitted points would be empty)
+  EXPECT_EQ(std::count(dat.begin(), dat.end(), '#'), 1) << dat;
+  EXPECT_EQ(dat.rfind("# 2D SP E_sp=100 zeta=0.316 N=400: no Beverloo law", 0), 0u) << dat;
   fs::remove_all(dir);
 }
 

@@ -153,8 +153,7 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       // a series that follows no Beverloo law is not in the crossover fit: its lambda is taken,
       // but it tells the design nothing (error 0, as below); the design fit takes it, and so
       // does the design made from it
-      const bool in_fit = !g.fit || std::find(g.no_beverloo_law.begin(), g.no_beverloo_law.end(), s) == g.no_beverloo_law.end();
-      beta_err.push_back(in_fit ? s->fit->beta_err : 0);
+      beta_err.push_back(!g.fit || g.takes(s) ? s->fit->beta_err : 0);
     }
     // a series the group has but cannot fit still holds its lambda: no information (error 0),
     // but no new series there (it would be the same jobs again, and the group would add nothing)

@@ -4,6 +4,7 @@
 /// pooled by inverse-variance weighting, clogged points left out of the fit but reported), one
 /// Beverloo fit per series, and one crossover fit per group of series that differ only in
 /// lambda = zeta/mu (same other parameters and the same drag scale for finite lambda).
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -128,6 +129,10 @@ struct Crossover {
   std::vector<const Series*> no_beverloo_law;
   /// the series the crossover fits take: `finite` without `no_beverloo_law`
   int fitted_points() const { return static_cast<int>(finite.size() - no_beverloo_law.size()); }
+  /// whether the crossover fits take this series of `finite`
+  bool takes(const Series* s) const {
+    return std::find(no_beverloo_law.begin(), no_beverloo_law.end(), s) == no_beverloo_law.end();
+  }
   /// the finite lambda of its series without a fit (too few flowing widths): a lambda the group
   /// has, where the adaptive planner must not place a new series again
   std::vector<double> unfitted_lambda;

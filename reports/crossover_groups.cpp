@@ -78,23 +78,29 @@ void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message,
   fit.reset();
 }
 
+/// The lambda, beta and beta's error of each series, for the crossover fits.
+struct Exponents {
+  std::vector<double> lambda, beta, beta_err;
+};
+Exponents exponents_of(const std::vector<const Series*>& series) {
+  Exponents x;
+  for (const Series* s : series) {
+    x.lambda.push_back(s->lambda);
+    x.beta.push_back(s->fit->beta);
+    x.beta_err.push_back(s->fit->beta_err);
+  }
+  return x;
+}
+
 /// Sorts a crossover group's finite-lambda series and fits the sigmoid to the beta of those
 /// that follow a Beverloo law (the others are set apart in no_beverloo_law, and a fit that fails
 /// for want of them says so).
 void fit_group(Crossover& g) {
   std::sort(g.finite.begin(), g.finite.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
   std::vector<const Series*> fitted;
-  std::vector<double> l, b, e;
-  for (const Series* s : g.finite) {
-    if (follows_no_beverloo_law(*s)) {
-      g.no_beverloo_law.push_back(s);
-      continue;
-    }
-    fitted.push_back(s);
-    l.push_back(s->lambda);
-    b.push_back(s->fit->beta);
-    e.push_back(s->fit->beta_err);
-  }
+  for (const Series* s : g.finite) (follows_no_beverloo_law(*s) ? g.no_beverloo_law : fitted).push_back(s);
+  const Exponents x = exponents_of(fitted);
+  const std::vector<double>&l = x.lambda, &b = x.beta, &e = x.beta_err;
   std::string left_out;
   for (const Series* s : g.no_beverloo_law) left_out += (left_out.empty() ? "" : ", ") + fmt(s->lambda, 3);
   if (!left_out.empty()) left_out = " (left out, k outside [0, smallest w]: no Beverloo law at lambda = " + left_out + ")";
@@ -111,15 +117,10 @@ void fit_group(Crossover& g) {
   drop_if_degenerate(g.fit, g.message, &g.design_fit);
   drop_if_degenerate(g.fit_free, g.message_free);
   if (!g.fit && !g.design_fit && !g.no_beverloo_law.empty()) {
-    std::vector<double> all_l, all_b, all_e;
-    for (const Series* s : g.finite) {
-      all_l.push_back(s->lambda);
-      all_b.push_back(s->fit->beta);
-      all_e.push_back(s->fit->beta_err);
-    }
+    const Exponents all = exponents_of(g.finite);
     try {
-      g.design_fit = fit_crossover(g.dimension, all_l, all_b, all_e);
-    } catch (const FitError&) {
+      g.design_fit = fit_crossover(g.dimension, all.lambda, all.beta, all.beta_err);
+    } catch (const FitError&) {  // no design either: the planner stops the group, saying why
     }
   }
   replica_spread(g, fitted, l);

@@ -1,7 +1,6 @@
 // beta versus lambda per crossover group, with the fitted sigmoid (the paper's fixed plateaus,
 // and free ones), the two limits, and the paper's stated values (its plateaus d - 1/2 and
 // d - 3/2 and lambda_c ~ 0.05 in 2D, ~ 0.07 in 3D) in grey; never rescaled (docs/paper.md).
-#include <algorithm>
 #include <cmath>
 
 #include "core/text_escape.h"
@@ -33,13 +32,10 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
       f.plots.push_back(num(d - 1.5) + " with lines dt 3 lc rgb 'gray50' notitle");
     }
     const std::string style = series_style(k++, n);
-    auto left_out_of_fit = [&g](const Series* s) {
-      return std::find(g.no_beverloo_law.begin(), g.no_beverloo_law.end(), s) != g.no_beverloo_law.end();
-    };
     if (g.fitted_points() > 0) {  // (no empty block: gnuplot would have nothing to draw)
       const int points = f.begin_block(g.label + ": lambda beta beta_err");
       for (const Series* s : g.finite)
-        if (!left_out_of_fit(s)) f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
+        if (g.takes(s)) f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
       f.plots.push_back("DATA index " + std::to_string(points) + " using 1:2:3 with yerrorbars " + style + " title " +
                         gnuplot_string(g.label));
     }

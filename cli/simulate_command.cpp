@@ -1,4 +1,5 @@
 // `beverloo simulate JOB.json [-o DIR] [--resume] [--overwrite] [--json]`: one engine run, no database.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -62,7 +63,9 @@ void print_summary(const RunResult& r, const SimConfig& c) {
   }
   if (r.clogged) std::printf("clog          last exit at t = %.1f, detected at t = %.1f\n", r.clog_time, r.clog_detected_time);
   std::printf("rho_n         %.4g +- %.2g   Q' = %.6g\n", r.rho_n, r.rho_n_err, r.Q_prime);
-  std::printf("|F_drag|      %.4g   |F_friction| %.4g   ratio %.4g\n", r.mean_F_drag, r.mean_F_friction, r.force_ratio);
+  std::printf("|F_drag|      %.4g   |F_friction| %.4g   ratio %.4g", r.mean_F_drag, r.mean_F_friction, r.force_ratio);
+  if (std::isfinite(r.force_ratio_err)) std::printf(" +- %.2g", r.force_ratio_err);  // none without friction
+  std::printf("\n");
   std::printf("dt            %.4g (limited by %s), %lld steps, seed %llu\n", r.dt, terminal_safe(r.dt_limiting_term).c_str(),
               static_cast<long long>(r.steps), static_cast<unsigned long long>(r.seed));
   std::printf("speed         %.3g particle-steps/s, %.1f s wall\n", r.particle_steps_per_second, r.wall_seconds);

@@ -28,13 +28,17 @@ struct SeriesPoint {
 
 /// |F_zeta| / |F_mu| (the paper's Fig. 6b) of a series: the mean over its runs that ended
 /// flowing with a finite ratio (each run's ratio of its window's mean forces), and the standard
-/// error of that mean over those runs (NaN below two runs).
+/// error of that mean over those runs; a series of one run has that run's own error (over the
+/// time blocks of its window; NaN from an engine before the field).
 struct ForceRatio {
   double mean = NAN, err = NAN;
   int runs = 0;
   /// per width, the mean over its runs: the ratio grows with w, so two angles are compared
   /// width by width where they share widths (paper_claims), not through the means' scatter
   std::map<double, double> by_w;
+  /// per width, the standard error of by_w from its runs' own errors (sqrt(sum err^2) / n);
+  /// absent where a run has none
+  std::map<double, double> by_w_err;
 };
 
 struct Series {

@@ -55,7 +55,10 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
   // a clogged run's Q' is as missing as its Q (0): coalesce keeps the row
   const std::string columns = rate == FlowRate::QPrime ? "coalesce(r.Q_prime, 0), coalesce(r.Q_prime_err, 0)" : "r.Q, r.Q_err";
   db::Statement st = db.prepare(
-      "SELECT j.key, j.job_json, " + columns + ", r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt, r.window_start, r.window_end, r.force_ratio FROM jobs j "
+      "SELECT j.key, j.job_json, " + columns + ", r.clogged, r.status, coalesce(r.clog_time, -1), r.steps, r.dt, r.window_start, r.window_end, r.force_ratio, "
+      // summary_json: force_ratio_err is a generated column only once a binary that knows it
+      // has opened the store (the report may read a campaign older than the field)
+      "json_extract(r.summary_json, '$.force_ratio_err') FROM jobs j "
       "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
       "WHERE c.campaign_id = coalesce(?1, (SELECT max(id) FROM campaigns)) ORDER BY c.point_index");
   if (campaign >= 0)
@@ -141,6 +144,7 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
     r.window_end = st.get_double(10);
     r.t_max = job.contains("run") ? job["run"].value("t_max", 0.0) : 0.0;
     if (!st.is_null(11)) r.force_ratio = st.get_double(11);
+    if (!st.is_null(12)) r.force_ratio_err = st.get_double(12);
     out.runs[key].push_back(r);
   }
   for (Series& s : out.series) drop_continued_runs(s, out.runs[s.key]);

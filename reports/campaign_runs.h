@@ -26,6 +26,7 @@ struct RunRecord {
   double window_start = 0, window_end = 0;  ///< its measurement window (t0)
   double t_max = 0;       ///< its run.t_max
   double force_ratio = NAN;  ///< |F_zeta| / |F_mu| over its window (NaN: not stored)
+  double force_ratio_err = NAN;  ///< its standard error over time blocks (NaN: an engine before the field)
 };
 
 struct CampaignRuns {

@@ -305,7 +305,8 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
 /// Read per angle by force_ratio_at_paper_lambda (fitted or not: a ratio needs no fit), checked
 /// as r(theta_w) / r(90), a direction as lambda_c's fall is, and below 30 deg as r(theta_w) /
 /// r(30), which agrees when it lies within kClaimAgreeSigmas sigma of 1 (sigma of the log of
-/// the ratio, from both angles' errors; none for a series of one run).
+/// the ratio, from both angles' errors; none for a series of one run from an engine before
+/// force_ratio_err).
 void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   for (const auto& [family, by_theta] : angle_families(fits.crossovers, /*fitted_only=*/false)) {
     std::map<double, std::pair<const Crossover*, ForceRatioAtLambda>> ratio;
@@ -323,30 +324,48 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
       c.paper = plateau ? "~1 (a plateau)" : "> 1";
       double log_ratio = std::log(a.mean / b.mean);
       double log_sigma = std::hypot(a.err / a.mean, b.err / b.mean);
-      // Both read as they are at two or more common widths: the ratio of the two angles width by
-      // width (it grows with w, by 40 % over the DP campaign's widths, which the means' standard
-      // errors would count as scatter), its log's mean and standard error over those widths.
+      // Both read as they are at common widths: the ratio of the two angles width by width (it
+      // grows with w, by 40 % over the DP campaign's widths, which the means' standard errors
+      // would count as scatter), its log's mean over those widths. Its sigma is the larger of
+      // the standard error over the widths (two or more) and the one the runs' own errors over
+      // time give: three widths that happen to agree closely do not make a sharp ratio.
       std::vector<double> paired;
+      double own_var = 0;
+      bool own_errors = true;
       if (a.series && b.series)
         for (const auto& [w, r] : a.series->force_ratio.by_w)
-          if (const auto other = b.series->force_ratio.by_w.find(w); other != b.series->force_ratio.by_w.end())
+          if (const auto other = b.series->force_ratio.by_w.find(w); other != b.series->force_ratio.by_w.end()) {
             paired.push_back(std::log(r / other->second));
-      if (paired.size() >= 2) {
+            const auto ea = a.series->force_ratio.by_w_err.find(w), eb = b.series->force_ratio.by_w_err.find(w);
+            if (ea == a.series->force_ratio.by_w_err.end() || eb == b.series->force_ratio.by_w_err.end())
+              own_errors = false;
+            else
+              own_var += std::pow(ea->second / r, 2) + std::pow(eb->second / other->second, 2);
+          }
+      own_errors = own_errors && !paired.empty();
+      std::string width_text;
+      if (paired.size() >= 2 || own_errors) {
         log_ratio = sample_mean(paired);
-        log_sigma = sample_sd(paired) / std::sqrt(paired.size());
+        const double scatter = paired.size() >= 2 ? sample_sd(paired) / std::sqrt(paired.size()) : NAN;
+        const double own = own_errors ? std::sqrt(own_var) / paired.size() : NAN;
+        log_sigma = std::fmax(scatter, own);  // fmax: the one there is when the other is NaN
+        width_text = "; width by width over " + std::to_string(paired.size()) +
+                     (paired.size() == 1 ? " width" : " widths") +
+                     (own_errors && !(scatter > own) ? ", sigma from the runs' errors over time"
+                                                     : ", sigma from the scatter over the widths");
       }
       c.measured = std::exp(log_ratio);
       c.sigma = c.measured * log_sigma;
       auto read = [](const ForceRatioAtLambda& r) {
-        return (std::isnan(r.err) ? format_value(r.mean, 3) + " (one run)" : format_with_error(r.mean, r.err, " +- ")) +
+        return (std::isnan(r.err) ? format_value(r.mean, 3) + " (one run, no error)" : format_with_error(r.mean, r.err, " +- ")) +
                (std::fabs(std::log10(r.lambda / kForceRatioLambda)) < 1e-6 ? std::string()
                                                                          : " at lambda = " + format_value(r.lambda, 2));
       };
       c.measured_text = (std::isnan(c.sigma) ? format_value(c.measured, 3) : format_with_error(c.measured, c.sigma, " +- ")) +
                         " (" + read(a) + " against " + read(b) + " at " + format_value(reference, 3) + " deg" +
-                        (paired.size() >= 2 ? "; width by width over " + std::to_string(paired.size()) + " widths" : "") + ")";
+                        width_text + ")";
       if (!(log_sigma > 0)) {
-        c.verdict = "not judged: no error (a series of one run at an angle)";
+        c.verdict = "not judged: no error (a series of one run at an angle, from an engine before force_ratio_err)";
       } else if (plateau) {
         const double z = std::fabs(log_ratio) / log_sigma;
         c.judged = true;

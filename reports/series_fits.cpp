@@ -92,18 +92,27 @@ void clog_statistics(Series& s, const std::vector<RunRecord>& runs) {
 
 /// Series::force_ratio: the runs that ended flowing (a clogged run's window is its jam).
 void force_ratio(Series& s, const std::vector<RunRecord>& runs) {
-  std::vector<double> values;
-  std::map<double, std::vector<double>> by_w;
+  std::vector<double> values, errors;
+  std::map<double, std::vector<double>> by_w, err_by_w;
   for (const RunRecord& r : runs)
     if (!r.clogged && r.Q > 0 && std::isfinite(r.force_ratio) && r.force_ratio > 0) {
       values.push_back(r.force_ratio);
+      errors.push_back(r.force_ratio_err);
       by_w[r.w].push_back(r.force_ratio);
+      err_by_w[r.w].push_back(r.force_ratio_err);
     }
   for (const auto& [w, at] : by_w) s.force_ratio.by_w[w] = sample_mean(at);
+  for (const auto& [w, errs] : err_by_w) {
+    double sum2 = 0;
+    for (double e : errs) sum2 += e * e;
+    if (std::isfinite(sum2) && sum2 > 0) s.force_ratio.by_w_err[w] = std::sqrt(sum2) / errs.size();
+  }
   s.force_ratio.runs = static_cast<int>(values.size());
   if (values.empty()) return;
   s.force_ratio.mean = sample_mean(values);
-  s.force_ratio.err = sample_sd(values) / std::sqrt(values.size());
+  // over two runs or more the scatter between them (widths included: the ratio grows with w);
+  // one run has only its own error over time
+  s.force_ratio.err = values.size() >= 2 ? sample_sd(values) / std::sqrt(values.size()) : errors.front();
 }
 
 }  // namespace

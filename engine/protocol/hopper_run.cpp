@@ -497,7 +497,8 @@ RunResult HopperRun<D>::finish(const std::string& status, const std::string& rea
   r.Q_prime_err = r.Q_err * r.a_eff / a_avg;
   r.mean_F_drag = o.mean_F_drag;
   r.mean_F_friction = o.mean_F_friction;
-  r.force_ratio = o.mean_F_friction > 0 ? o.mean_F_drag / o.mean_F_friction : INFINITY;
+  r.force_ratio = o.force_ratio;
+  r.force_ratio_err = o.force_ratio_err;
   r.profile_h = o.h;
   r.profile_v_g = o.v_g;
   r.profile_v_g_err = o.v_g_err;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "../units.h"
+#include "flow_rate.h"
 
 namespace beverloo {
 
@@ -60,7 +61,7 @@ template <int D>
 ObservableSummary FlowObservables<D>::summarize(double t_start) const {
   ObservableSummary out;
   const int nblocks = static_cast<int>(block_scalars.size()) / kScalars;
-  const int first = static_cast<int>(std::ceil(t_start / block_length_ - 1e-9));
+  const int first = first_block_at(t_start);
   out.h.resize(nh_);
   for (int k = 0; k < nh_; ++k) out.h[k] = k * dh_;
   std::vector<double> sum(nh_, 0), sum2(nh_, 0);
@@ -101,7 +102,27 @@ ObservableSummary FlowObservables<D>::summarize(double t_start) const {
   }
   out.mean_F_drag = drag / samples;
   out.mean_F_friction = fric / samples;
+  out.force_ratio = out.mean_F_friction > 0 ? out.mean_F_drag / out.mean_F_friction : INFINITY;
+  out.force_ratio_err = force_ratio_error(first, out.force_ratio, out.mean_F_friction);
   return out;
+}
+
+template <int D>
+double FlowObservables<D>::force_ratio_error(int first_block, double ratio, double mean_friction) const {
+  // R = <d> / <f> over the window. To first order its fluctuation is (d - R f) / <f>, so the
+  // error of R is that of the mean of u_b = (d_b - R f_b) / <f> over the blocks' means: a
+  // sum of correlated samples, blocked in pairs until few blocks are left (the force
+  // magnitudes follow the flow's slow pulses, longer than one 5 t0 block at times).
+  if (!(mean_friction > 0) || !std::isfinite(ratio)) return NAN;
+  std::vector<double> u;
+  const int nblocks = static_cast<int>(block_scalars.size()) / kScalars;
+  for (int b = first_block; b < nblocks; ++b) {
+    const double* sc = &block_scalars[b * kScalars];
+    if (sc[0] == 0) continue;
+    u.push_back((sc[2] / sc[0] - ratio * sc[3] / sc[0]) / mean_friction);
+  }
+  if (u.size() < 2) return NAN;
+  return FlowRateEstimator::blocking_standard_error(u);
 }
 
 template class FlowObservables<2>;

@@ -7,7 +7,10 @@
 ///    phi = (sqrt(2 pi) s)^-d exp(-|r|^2 / 2 s^2);
 ///  - rho_n: number density in the rectangle 2w wide and w tall above the orifice (3D: the
 ///    cylinder of diameter 2w and height w);
-///  - mean |F^zeta| and |F^mu| per particle (all N particles).
+///  - mean |F^zeta| and |F^mu| per particle (all N particles), and their ratio with its
+///    standard error (the ratio of the window's means; its error by the delta method over the
+///    blocks, blocked further in pairs as the flow rate's, FlowRateEstimator).
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +24,9 @@ struct ObservableSummary {
   std::vector<double> h, v_g, v_g_err;  ///< profile heights and values (err: SE over blocks)
   double rho_n = 0, rho_n_err = 0;
   double mean_F_drag = 0, mean_F_friction = 0;
+  /// mean_F_drag / mean_F_friction (inf without friction) and its standard error (NaN without
+  /// friction or with fewer than two blocks)
+  double force_ratio = 0, force_ratio_err = NAN;
   int blocks_used = 0;
 };
 
@@ -42,6 +48,8 @@ class FlowObservables {
 
  private:
   void ensure_block(int b);
+  int first_block_at(double t_start) const { return static_cast<int>(std::ceil(t_start / block_length_ - 1e-9)); }
+  double force_ratio_error(int first_block, double ratio, double mean_friction) const;
   double block_length_, dh_, width_, w_;
   int nh_;
 };

@@ -64,6 +64,9 @@ const std::vector<ResultField> kFields = {
      S::Column, true, false, BEVERLOO_FIELD(mean_F_friction)},
     {"force_ratio", T::Real, "-", "mean_F_drag / mean_F_friction (inf without friction)",
      G::Result, true, S::Column, true, false, BEVERLOO_FIELD(force_ratio)},
+    {"force_ratio_err", T::Real, "-",
+     "standard error of force_ratio over time blocks of the window (delta method, blocked in pairs); none without friction",
+     G::Result, true, S::Generated, true, false, BEVERLOO_FIELD(force_ratio_err)},
     {"max_overlap_seen", T::Real, "-", "largest relative contact overlap of the run, 1 - r/sigma_mn (DP: 1 - d/delta_mn)", G::Result, true, S::Generated,
      false, false, BEVERLOO_FIELD(max_overlap_seen)},
     // the step (in result.h5's /parameters)

@@ -1,6 +1,7 @@
 #pragma once
 /// \file run_result.h
 /// \brief Everything one hopper run reports (written to result.h5 and summary.json).
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,6 +39,7 @@ struct RunResult {
   double rho_n = 0, rho_n_err = 0, a_eff = 0, Q_prime = 0, Q_prime_err = 0;
   // dissipation forces
   double mean_F_drag = 0, mean_F_friction = 0, force_ratio = 0;  ///< ratio = drag / friction
+  double force_ratio_err = NAN;  ///< its standard error (NaN: no friction, or under two blocks)
   // a draining hopper (reinject = false): Q and Q_err are c0 and its error (per t0) of the fit
   // dN/dt = -c0 sqrt(N), the window the span of its blocks
   bool draining = false;

@@ -135,7 +135,8 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                    << legend(name, "plateaus free");
       }
       if (family->ratio.size() >= 2) {
-        // force_ratio_err NaN: a series of one run (no error); drawn without a bar
+        // force_ratio_err NaN: a series of one run from an engine before the run's own error
+        // (force_ratio_err of result.h5); drawn without a bar
         const int ratio =
             f.begin_block(name + ": theta_w force_ratio force_ratio_err lambda runs lambda_below lambda_above");
         for (const auto& [theta, r] : family->ratio)

@@ -51,6 +51,7 @@ RunResult distinct_result() {
   r.mean_F_drag = 0.375;
   r.mean_F_friction = 0.1875;
   r.force_ratio = 2.0;
+  r.force_ratio_err = 0.015625;
   r.max_overlap_seen = 0.0123;
   r.dt = 1.25e-3;
   r.seed = 987654321;
@@ -137,7 +138,8 @@ TEST(ResultFields, SummaryJsonHasEveryRowMarkedForItAndNothingElse) {
       {"Q_rel_err", 0.05}, {"window_start", 12.5}, {"window_end", 87.25}, {"exits_in_window", 321},
       {"exits_total", 400}, {"clogged", true}, {"clog_time", 90.5}, {"clog_detected_time", 110.5},
       {"rho_n", 1.0625}, {"rho_n_err", 0.03125}, {"a_eff", 0.94}, {"Q_prime", 1.5}, {"Q_prime_err", 0.125},
-      {"mean_F_drag", 0.375}, {"mean_F_friction", 0.1875}, {"force_ratio", 2.0}, {"max_overlap_seen", 0.0123},
+      {"mean_F_drag", 0.375}, {"mean_F_friction", 0.1875}, {"force_ratio", 2.0}, {"force_ratio_err", 0.015625},
+      {"max_overlap_seen", 0.0123},
       {"dt", 1.25e-3}, {"seed", 987654321u}, {"steps", 96400}, {"t_end", 120.5}, {"dt_limiting_term", "sp_contact"},
       {"fire_iterations", 77}, {"reinjections", 55}, {"reinjection_fallbacks", 6}, {"wall_seconds", 4.5},
       {"particle_steps_per_second", 2.5e7}, {"resumed_times", 3}};

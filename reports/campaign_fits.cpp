@@ -45,7 +45,12 @@ std::string fit_quality(const Series& s) {
     std::snprintf(b, sizeof b, "not determined: beta's error is %.0f %%", 100 * rel);
     return b;
   }
-  if (follows_no_beverloo_law(s)) return "not determined: k outside [0, smallest w]";
+  if (follows_no_beverloo_law(s)) {
+    char b[128];
+    std::snprintf(b, sizeof b, "not determined: k = %.3g +- %.2g, outside [0, smallest w] by more than %g errors",
+                  s.fit->k, s.fit->k_err, kBeverlooLawKSigmas);
+    return b;
+  }
   return "ok";
 }
 
@@ -54,7 +59,11 @@ bool follows_no_beverloo_law(const Series& s) {
   double w_min = INFINITY;
   for (const auto& p : s.points)
     if (p.flowing()) w_min = std::min(w_min, p.w);
-  return s.fit->k < 0 || s.fit->k >= w_min;
+  // a k within its errors of the range is a Beverloo law whose k the widths do not pin: its
+  // beta's error (correlated with k's) already says how little it is worth. A k_err that is
+  // not a number (a fit without errors) gives no tolerance.
+  const double tolerance = std::isfinite(s.fit->k_err) ? kBeverlooLawKSigmas * s.fit->k_err : 0.0;
+  return s.fit->k < -tolerance || s.fit->k >= w_min + tolerance;
 }
 
 int Series::clogged_points() const {

@@ -112,12 +112,16 @@ struct Series {
 
 /// A fit whose beta has a larger relative error than this is "not determined" (index.html).
 inline constexpr double kBetaDeterminedRelErr = 0.25;
+/// A free fit's k this many of its errors outside [0, smallest flowing w] follows no Beverloo
+/// law; closer, the range holds it (the claims' "agree" is within 2 combined errors too).
+inline constexpr double kBeverlooLawKSigmas = 2.0;
 /// "ok", or "not determined: ..." naming why (beta's relative error; k outside [0, smallest w]).
 std::string fit_quality(const Series& s);
-/// True if the series' free fit puts k outside [0, smallest flowing w]: its Q(w) follows no
-/// Beverloo law (it curves more than any with k >= 0 can, or k sits at the smallest width), so
-/// its beta is no Beverloo exponent, however small its error. (A beta with a large error is
-/// still one, and a weighted fit can take it.)
+/// True if the series' free fit puts k outside [0, smallest flowing w] by more than
+/// kBeverlooLawKSigmas of k's errors: its Q(w) follows no Beverloo law (it curves more than
+/// any with k >= 0 can, or k sits at the smallest width), so its beta is no Beverloo exponent,
+/// however small its error. (A beta with a large error is still one, and a weighted fit can
+/// take it.)
 bool follows_no_beverloo_law(const Series& s);
 
 struct Crossover {

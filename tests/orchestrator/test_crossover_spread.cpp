@@ -162,5 +162,30 @@ TEST(CrossoverFitOfAGroup, ASeriesThatFollowsNoBeverlooLawStaysOutOfTheSigmoid) 
   EXPECT_NE(few.front().message.find("no Beverloo law at lambda = 0.003"), std::string::npos) << few.front().message;
 }
 
+TEST(CrossoverFitOfAGroup, AKWithinTwoErrorsOfTheRangeIsABeverlooLawAndStaysIn) {
+  // k = -0.5 +- 0.3 is a Beverloo law whose k the widths do not pin (1.7 errors below 0); with
+  // k's error 0.2 it is 2.5 errors below and leaves the sigmoid. At the top: the smallest
+  // flowing width is 4, and k = 4.3 +- 0.2 stays, 4.5 +- 0.2 leaves. Without an error there is
+  // no tolerance.
+  std::vector<Series> series = three_replica_group(-1);
+  Series& odd = series.front();
+  auto left_out = [&](double k, double k_err) {
+    odd.fit->k = k, odd.fit->k_err = k_err;
+    const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+    EXPECT_EQ(groups.size(), 1u);
+    const bool out = !groups.front().no_beverloo_law.empty();
+    EXPECT_EQ(out, follows_no_beverloo_law(odd)) << k << " +- " << k_err;
+    EXPECT_EQ(out, fit_quality(odd) != "ok") << fit_quality(odd);
+    return out;
+  };
+  EXPECT_FALSE(left_out(-0.5, 0.3));
+  EXPECT_TRUE(left_out(-0.5, 0.2));
+  EXPECT_FALSE(left_out(4.3, 0.2));
+  EXPECT_TRUE(left_out(4.5, 0.2));
+  EXPECT_TRUE(left_out(-0.01, NAN));
+  left_out(-0.5, 0.2);
+  EXPECT_EQ(fit_quality(odd), "not determined: k = -0.5 +- 0.2, outside [0, smallest w] by more than 2 errors");
+}
+
 }  // namespace
 }  // namespace beverloo

@@ -398,8 +398,10 @@ TEST(Report, ABetaOfLambdaGroupWithoutABeverlooLawIsDrawnAndSaysWhy) {
                       {"base", {{"N", 400}, {"W", 25}}},
                       {"sweep", {{"product", {{{"lambda", {1e-3, 1e-2, 0.1, 1}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
   const fs::path dir = campaign_of(sweep, [](const json& j) {
+    // k = -3 measured to 0.1 %: the fit's k lies many of its errors below 0 (with 1 % errors
+    // k = -3 +- 1.6 or so would be a Beverloo law the widths cannot pin, and stay in)
     const double Q = beverloo_model(j["w"].get<double>(), 0.4, -3.0, 1.5);
-    return converged_summary(Q, 0.01 * Q);
+    return converged_summary(Q, 0.001 * Q);
   });
   const fs::path out = dir / "report";
   ASSERT_NO_THROW(write_report(dir.string(), out.string()));

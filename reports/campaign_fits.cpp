@@ -47,9 +47,8 @@ std::string fit_quality(const Series& s) {
   }
   if (follows_no_beverloo_law(s)) {
     char b[128];
-    std::snprintf(b, sizeof b, "not determined: k = %.3g +- %.2g, outside [0, smallest w] by more than %g errors",
-                  s.fit->k, s.fit->k_err, kBeverlooLawKSigmas);
-    return b;
+    std::snprintf(b, sizeof b, "not determined: k = %.3g +- %.2g, ", s.fit->k, s.fit->k_err);
+    return b + no_beverloo_law_rule().substr(2);  // "outside [0, ...": k is named with its value
   }
   return "ok";
 }
@@ -64,6 +63,12 @@ bool follows_no_beverloo_law(const Series& s) {
   // not a number (a fit without errors) gives no tolerance.
   const double tolerance = std::isfinite(s.fit->k_err) ? kBeverlooLawKSigmas * s.fit->k_err : 0.0;
   return s.fit->k < -tolerance || s.fit->k >= w_min + tolerance;
+}
+
+std::string no_beverloo_law_rule() {
+  char b[80];
+  std::snprintf(b, sizeof b, "k outside [0, smallest w] by more than %g errors", kBeverlooLawKSigmas);
+  return b;
 }
 
 int Series::clogged_points() const {

@@ -123,6 +123,9 @@ std::string fit_quality(const Series& s);
 /// however small its error. (A beta with a large error is still one, and a weighted fit can
 /// take it.)
 bool follows_no_beverloo_law(const Series& s);
+/// That rule in words, as tables, figures and messages name it: "k outside [0, smallest w] by
+/// more than 2 errors".
+std::string no_beverloo_law_rule();
 
 struct Crossover {
   std::string key, label;

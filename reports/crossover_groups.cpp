@@ -103,7 +103,7 @@ void fit_group(Crossover& g) {
   const std::vector<double>&l = x.lambda, &b = x.beta, &e = x.beta_err;
   std::string left_out;
   for (const Series* s : g.no_beverloo_law) left_out += (left_out.empty() ? "" : ", ") + fmt(s->lambda, 3);
-  if (!left_out.empty()) left_out = " (left out, k outside [0, smallest w] by more than 2 errors: no Beverloo law at lambda = " + left_out + ")";
+  if (!left_out.empty()) left_out = " (left out, " + no_beverloo_law_rule() + ": no Beverloo law at lambda = " + left_out + ")";
   try {
     g.fit = fit_crossover(g.dimension, l, b, e);
   } catch (const FitError& err) {

@@ -108,7 +108,7 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
   for (const Crossover& g : fits.crossovers) {
     html << "<tr><td>" << html_escape(g.label) << "</td><td>" << g.fitted_points();
     if (!g.no_beverloo_law.empty())  // (their lambdas are in the fit's message when it fails for want of them)
-      html << "<br><small>+" << g.no_beverloo_law.size() << " left out: k outside [0, smallest w] by more than 2 errors</small>";
+      html << "<br><small>+" << g.no_beverloo_law.size() << " left out: " << no_beverloo_law_rule() << "</small>";
     html << "</td>";
     if (g.fit)
       html << "<td>" << pm(g.fit->lambda_c, g.fit->lambda_c_err) << spread(g.spread) << "</td><td>" << pm(g.fit->b, g.fit->b_err) << "</td><td>"

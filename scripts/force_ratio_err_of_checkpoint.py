@@ -8,7 +8,7 @@ The final checkpoint must be the run's last step (beverloo writes one as the run
 script checks its step against summary.json's). Needs h5dump (hdf5-tools), no h5py.
 
 Usage: scripts/force_ratio_err_of_checkpoint.py JOB_DIR [JOB_DIR ...]
-Prints: job_dir w theta_w force_ratio force_ratio_err blocks
+Prints: job_dir force_ratio force_ratio_err blocks (the blocks of the window)
 """
 import json
 import math
@@ -49,8 +49,7 @@ def blocking_standard_error(x, min_blocks=16):
     return best
 
 
-def force_ratio_err(job_dir):
-    summary = json.load(open(job_dir + "/summary.json"))
+def force_ratio_err(job_dir, summary):
     for name in ("spec.json", "job.json"):  # a campaign's job directory, or simulate's
         try:
             spec = json.load(open(job_dir + "/" + name))
@@ -78,7 +77,7 @@ def force_ratio_err(job_dir):
 
 for job_dir in sys.argv[1:]:
     summary = json.load(open(job_dir + "/summary.json"))
-    ratio, err, n = force_ratio_err(job_dir)
+    ratio, err, n = force_ratio_err(job_dir, summary)
     if abs(ratio - summary["force_ratio"]) > 1e-12 * abs(ratio):
         raise SystemExit(f"{job_dir}: ratio {ratio} from the blocks, {summary['force_ratio']} in summary.json")
     print(job_dir, f"{ratio:.10g}", f"{err:.6g}", n)

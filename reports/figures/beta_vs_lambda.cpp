@@ -40,12 +40,12 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
                         gnuplot_string(g.label));
     }
     if (!g.no_beverloo_law.empty()) {  // drawn with open circles, but not in the sigmoid's fit
-      const int left_out = f.begin_block(g.label + ": no Beverloo law (k outside [0, smallest w]), not fitted: lambda beta beta_err");
+      const int left_out = f.begin_block(g.label + ": no Beverloo law (" + no_beverloo_law_rule() + "), not fitted: lambda beta beta_err");
       for (const Series* s : g.no_beverloo_law)
         f.data << num(s->lambda) << " " << num(s->fit->beta) << " " << num(s->fit->beta_err) << "\n";
       f.plots.push_back("DATA index " + std::to_string(left_out) + " using 1:2:3 with yerrorbars " +
                         style.substr(0, style.find(" pt")) + " pt 6 title " +
-                        gnuplot_string(g.label + ": k outside [0, smallest w], not in the sigmoid's fit"));
+                        gnuplot_string(g.label + ": " + no_beverloo_law_rule() + ", not in the sigmoid's fit"));
     }
     if (g.fit) {
       const int curve = f.begin_block(g.label + ": sigmoid lambda beta");

@@ -268,7 +268,7 @@ TEST(PaperClaims, Fig6bForceRatioRisesAsTheAngleFallsAndStopsBelowThirtyDegreesW
     Series s = series(family, 2, 1e-2, 1.0, 0.05);
     s.fit.reset();
     s.theta_left = s.theta_right = theta;
-    s.force_ratio = {ratio, err, runs};
+    s.force_ratio.mean = ratio, s.force_ratio.err = err, s.force_ratio.runs = runs;
     fits.series.push_back(s);
     Crossover g;
     g.label = family;
@@ -314,7 +314,7 @@ CampaignFits ratios_at_two_widths(const std::string& family, const std::vector<s
     Series s = series(family, 2, 1e-2, 1.0, 0.05);
     s.fit.reset();
     s.theta_left = s.theta_right = theta;
-    s.force_ratio = {(r5 + r7) / 2, (r7 - r5) / 2, 2};
+    s.force_ratio.mean = (r5 + r7) / 2, s.force_ratio.err = (r7 - r5) / 2, s.force_ratio.runs = 2;
     s.force_ratio.by_w = {{5.0, r5}, {7.0, r7}};
     if (!std::isnan(run_rel_err)) s.force_ratio.by_w_err = {{5.0, run_rel_err * r5}, {7.0, run_rel_err * r7}};
     fits.series.push_back(s);
@@ -418,9 +418,11 @@ TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfT
   EXPECT_FALSE(s30->agrees);
   EXPECT_EQ(s30->verdict, "differs (above, z = 5.6 from the interval)");
   EXPECT_EQ(find(checks, side, "E at theta_w = 60, lambda = 0.01"), nullptr) << "the paper states no lambda_c at 60 deg";
-  for (const ClaimCheck& c : checks)
-    if (c.claim.rfind("Fig. 6a at one lambda", 0) == 0)
+  for (const ClaimCheck& c : checks) {
+    if (c.claim.rfind("Fig. 6a at one lambda", 0) == 0) {
       EXPECT_NE(c.subject.rfind("F at", 0), 0u) << "a group with a crossover fit is read by its lambda_c";
+    }
+  }
   // H: 60 deg has no sigmoid, so its beta is read against 90 deg's series at the same lambda
   const ClaimCheck* h60 = find(checks, falls, "H at theta_w = 60, lambda = 0.01");
   ASSERT_NE(h60, nullptr) << "a crossover fit at 90 deg must not hide the unfitted angles' beta";
@@ -562,6 +564,63 @@ TEST(PaperClaims, Fig7bFrictionOnlyKIsBelowOneAtSoftKbAndNearOneAndAHalfAtStiffK
   narrow.series.push_back(dp_friction_cell(8.829, 0.02626, 0.7, 0.2));
   narrow.series.push_back(dp_friction_cell(8.829, 2.626, 1.4, 0.2));
   EXPECT_TRUE(fig7b(check_paper_claims(narrow)).empty());
+}
+
+/// An SP series of one limit at stiffness E_sp with its held fit (beta 3/2 with friction only,
+/// 1/2 with drag only); base_key pairs the two limits of one stiffness.
+Series sp_held(bool friction, double E_sp, double k_held, double k_err, double C_held, double C_err, double spread = NAN) {
+  Series s = series(std::string(friction ? "SP friction" : "SP drag") + " E_sp=" + std::to_string(E_sp), 2,
+                    friction ? 0 : INFINITY, friction ? 1.6 : 0.45, 0.05);
+  s.E_sp = E_sp;
+  s.base_key = "sp E_sp=" + std::to_string(E_sp);
+  BeverlooFit held;
+  held.beta = friction ? 1.5 : 0.5, held.k = k_held, held.k_err = k_err, held.C = C_held, held.C_err = C_err;
+  (friction ? s.authors_fixed_hi : s.authors_fixed_lo) = held;
+  (friction ? s.k_at_beta_hi_replica_spread : s.k_at_beta_lo_replica_spread) = spread;
+  s.replica_fits = std::isnan(spread) ? 1 : 3;
+  return s;
+}
+
+TEST(PaperClaims, AppendixBHardLimitKOfEachLimitAndTheRatioOfTheirCWithBetaHeld) {
+  auto appendix_b = [](const std::vector<ClaimCheck>& checks) {
+    std::vector<const ClaimCheck*> out;
+    for (const ClaimCheck& c : checks)
+      if (c.claim.find("Appendix B") != std::string::npos) out.push_back(&c);
+    return out;
+  };
+  CampaignFits fits;
+  fits.series.push_back(sp_held(true, 138889, 1.9, 0.1, 0.5, 0.02, 0.3));  // ~1.6: sigma 0.3 (spread), z = 1.0
+  fits.series.push_back(sp_held(false, 138889, 2.6, 0.2, 2.5, 0.125));     // ~3.4: z = 4.0
+  fits.series.push_back(sp_held(true, 13888.9, 1.6, 0.1, 0.5, 0.02));      // softer than the paper's 1e5: no check
+  fits.series.push_back(sp_held(false, 13888.9, 3.4, 0.1, 1.75, 0.1));
+  Series dp = sp_held(false, 138889, 3.4, 0.1, 1.75, 0.1);  // a DP series is not Appendix B's SP
+  dp.model = "dp_smooth", dp.E_sp = NAN, dp.label = "DP";
+  fits.series.push_back(dp);
+  const auto checks = check_paper_claims(fits);
+  const auto b = appendix_b(checks);
+  ASSERT_EQ(b.size(), 3u);
+  for (const ClaimCheck* c : b) EXPECT_EQ(c->subject.find("E_sp=13888.9"), std::string::npos) << c->claim;
+  const ClaimCheck* f = find(checks, "friction only: k ~ 1.6", fits.series[0].label);
+  ASSERT_NE(f, nullptr);
+  EXPECT_DOUBLE_EQ(f->sigma, 0.3);
+  EXPECT_EQ(f->verdict, "agrees (z = 1.0)");
+  EXPECT_NE(f->measured_text.find("beta held at 3/2"), std::string::npos) << f->measured_text;
+  EXPECT_NE(f->measured_text.find("spread 0.3 over 3 replicas"), std::string::npos) << f->measured_text;
+  const ClaimCheck* d = find(checks, "drag only: k ~ 3.4", fits.series[1].label);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->verdict, "differs (z = 4.0)");
+  const ClaimCheck* ratio = find(checks, "as a ratio (beta held", fits.series[1].label + " / " + fits.series[0].label);
+  ASSERT_NE(ratio, nullptr);
+  EXPECT_DOUBLE_EQ(ratio->measured, 5.0);
+  EXPECT_NEAR(ratio->sigma, 5.0 * std::hypot(0.05, 0.04), 1e-12);
+  EXPECT_EQ(ratio->verdict, "differs (z = 4.7)");  // 5 against 0.42 / 0.12 = 3.5, sigma 0.32
+  // the text's E_sp = 1e5 passes too; the ratio needs the two limits of one series
+  CampaignFits text;
+  text.series.push_back(sp_held(true, 1e5, 1.6, 0.1, 0.12, 0.01));
+  text.series.push_back(sp_held(false, 1e5 * 1.0001, 3.4, 0.1, 0.42, 0.02));
+  const auto t = appendix_b(check_paper_claims(text));
+  ASSERT_EQ(t.size(), 2u);
+  for (const ClaimCheck* c : t) EXPECT_EQ(c->claim.find("as a ratio"), std::string::npos);
 }
 
 TEST(PaperClaims, TablesEscapeEveryTextCell) {

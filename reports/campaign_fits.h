@@ -46,6 +46,9 @@ struct Series {
   /// base_key without the hopper angles as well: the beta(lambda) groups that share it differ
   /// only in theta_w (the paper's Fig. 6)
   std::string angle_free_key;
+  /// The series' job without N (dissipation kept): the series that share it differ only in the
+  /// number of particles (the paper's Appendix C, Fig. C(b))
+  std::string size_free_key;
   /// Replicas with a flow rate but no usable error (Q_err not > 0 or not a number): left out
   /// of the pooled points and the fit, and said so (never pooled as Q = 0 +- 0).
   int left_out = 0;

@@ -111,6 +111,9 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
       base.erase("theta_w_left_deg");
       base.erase("theta_w_right_deg");
       s.angle_free_key = sha256_hex(base.dump());
+      json sized = series_job;
+      sized.erase("N");
+      s.size_free_key = sha256_hex(sized.dump());
       out.base_job_of[key] = base;
       series_jobs.push_back(series_job);
       std::ostringstream label;

@@ -635,6 +635,75 @@ void hard_limit_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   }
 }
 
+/// Appendix C, Fig. C(b): "C grows roughly linearly with system size, but the slope is much
+/// weaker for systems with lambda -> inf". Per group of limit series that differ only in N
+/// (Series::size_free_key), C of the fit with beta held (d - 1/2 friction only, d - 3/2 drag
+/// only: Cs of different exponents carry different units) from the smallest to the largest N
+/// with a held fit: a direction, judged on log C(N_max) / C(N_min). Where both limits of one
+/// system have it at two or more common N, the drag limit's growth over the common range against
+/// the friction limit's: "weaker with drag" is a direction too.
+void prefactor_growth_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  struct Growth {
+    const Series *lo = nullptr, *hi = nullptr;
+    double log_ratio = 0, sigma = 0;  // of C(hi) / C(lo), in log
+  };
+  auto held = [](const Series& s) -> const BeverlooFit* {
+    const std::optional<BeverlooFit>& h = s.lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo;
+    return h && h->C > 0 && h->C_err > 0 ? &*h : nullptr;
+  };
+  auto growth = [&](const Series& lo, const Series& hi) {
+    const BeverlooFit &a = *held(lo), &b = *held(hi);
+    return Growth{&lo, &hi, std::log(b.C / a.C), std::hypot(a.C_err / a.C, b.C_err / b.C)};
+  };
+  std::map<std::string, std::map<int, const Series*>> groups;  // size_free_key -> N -> series
+  for (const Series& s : fits.series)
+    if (simulated_flow(s) && (s.lambda == 0 || std::isinf(s.lambda)) && held(s)) groups[s.size_free_key][s.N] = &s;
+  auto grows_text = [](const Growth& g) {
+    return format_with_error(std::exp(g.log_ratio), std::exp(g.log_ratio) * g.sigma, " +- ") + " from N = " +
+           std::to_string(g.lo->N) + " to " + std::to_string(g.hi->N) + " (N x " +
+           format_value(static_cast<double>(g.hi->N) / g.lo->N, 3) + ")";
+  };
+  for (const auto& [key, by_N] : groups) {
+    if (by_N.size() < 2) continue;
+    const Growth g = growth(*by_N.begin()->second, *by_N.rbegin()->second);
+    const bool friction = g.lo->lambda == 0;
+    ClaimCheck c;
+    c.claim = std::string("C grows with N (Appendix C, Fig. C(b)), ") + (friction ? "friction only" : "drag only") +
+              (friction ? " (beta held at d - 1/2)" : " (beta held at d - 3/2)");
+    c.subject = g.lo->label + " / " + g.hi->label;
+    c.paper = "grows, roughly linearly";
+    c.measured = std::exp(g.log_ratio);
+    c.sigma = c.measured * g.sigma;
+    c.measured_text = "C(N_max) / C(N_min) = " + grows_text(g);
+    judge_direction(c, g.log_ratio / g.sigma, "grows", "falls");
+    out.push_back(c);
+  }
+  // the two limits of one system: friction-only and drag-only groups whose series at one N
+  // share a base_key (all but the dissipation equal)
+  for (const auto& [fkey, friction] : groups) {
+    if (friction.begin()->second->lambda != 0) continue;
+    for (const auto& [dkey, drag] : groups) {
+      if (!std::isinf(drag.begin()->second->lambda)) continue;
+      std::vector<int> common;
+      for (const auto& [N, s] : friction)
+        if (drag.count(N) && drag.at(N)->base_key == s->base_key) common.push_back(N);
+      if (common.size() < 2) continue;
+      const Growth gf = growth(*friction.at(common.front()), *friction.at(common.back()));
+      const Growth gd = growth(*drag.at(common.front()), *drag.at(common.back()));
+      ClaimCheck c;
+      c.claim = "C's growth with N is much weaker with drag only than with friction only (Appendix C, Fig. C(b); beta held)";
+      c.subject = gd.hi->label + " / " + gf.hi->label;
+      c.paper = "weaker with drag";
+      c.measured = std::exp(gd.log_ratio - gf.log_ratio);
+      c.sigma = c.measured * std::hypot(gd.sigma, gf.sigma);
+      c.measured_text = "drag only " + grows_text(gd) + "; friction only " + grows_text(gf);
+      judge_direction(c, (gf.log_ratio - gd.log_ratio) / std::hypot(gd.sigma, gf.sigma), "weaker with drag",
+                      "stronger with drag");
+      out.push_back(c);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
@@ -652,6 +721,7 @@ std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
   heatmap_k_checks(fits, HeatmapLimit{false}, out);
   heatmap_k_checks(fits, HeatmapLimit{true}, out);
   hard_limit_checks(fits, out);
+  prefactor_growth_checks(fits, out);
   experiment_checks(fits, out);
   return out;
 }

@@ -110,9 +110,10 @@ ReportFigure finish(Figure& f, const fs::path& dir, const std::string& needs) {
 }
 
 const std::vector<FigureMaker>& report_figures() {
-  static const std::vector<FigureMaker> list = {q_vs_w,  loglog_collapse, beta_vs_lambda,    lambda_c_vs_theta, k_vs_Esp,
-                                                k_vs_Kb, k_heatmap_Kl_Kb, velocity_profiles, velocity_regimes, drain_q_vs_w,
-                                                drain_collapse, drain_curves,    clog_survival,   q_prime_vs_w};
+  static const std::vector<FigureMaker> list = {q_vs_w,          loglog_collapse,   beta_vs_lambda, lambda_c_vs_theta,
+                                                k_vs_Esp,        k_vs_Kb,           k_heatmap_Kl_Kb, prefactor_vs_N,
+                                                velocity_profiles, velocity_regimes, drain_q_vs_w,   drain_collapse,
+                                                drain_curves,    clog_survival,     q_prime_vs_w};
   return list;
 }
 

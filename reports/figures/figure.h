@@ -60,6 +60,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c);
 ReportFigure k_vs_Esp(const FigureContext& c);
 ReportFigure k_vs_Kb(const FigureContext& c);
 ReportFigure k_heatmap_Kl_Kb(const FigureContext& c);
+ReportFigure prefactor_vs_N(const FigureContext& c);
 ReportFigure velocity_profiles(const FigureContext& c);
 ReportFigure velocity_regimes(const FigureContext& c);
 ReportFigure drain_q_vs_w(const FigureContext& c);

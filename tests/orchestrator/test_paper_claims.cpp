@@ -623,6 +623,69 @@ TEST(PaperClaims, AppendixBHardLimitKOfEachLimitAndTheRatioOfTheirCWithBetaHeld)
   for (const ClaimCheck* c : t) EXPECT_EQ(c->claim.find("as a ratio"), std::string::npos);
 }
 
+/// An SP series of one limit at N with C from the held fit; size_free_key groups one system's
+/// sizes, base_key pairs its two limits at one N.
+Series sized(bool friction, int N, double C_held, double C_err) {
+  Series s = sp_held(friction, 69.4444, 1.5, 0.1, C_held, C_err);
+  s.N = N;
+  s.label += " N=" + std::to_string(N);
+  s.size_free_key = friction ? "friction" : "drag";
+  s.base_key = "N=" + std::to_string(N);
+  return s;
+}
+
+TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
+  auto rows = [](const std::vector<ClaimCheck>& checks, const std::string& part) {
+    std::vector<const ClaimCheck*> out;
+    for (const ClaimCheck& c : checks)
+      if (c.claim.find(part) != std::string::npos) out.push_back(&c);
+    return out;
+  };
+  CampaignFits fits;
+  // friction only: C 1 -> 3 from N = 800 to 2400 (1 % errors); drag only 2 -> 2.2 (2 % errors)
+  fits.series.push_back(sized(true, 800, 1.0, 0.01));
+  fits.series.push_back(sized(true, 1600, 2.0, 0.02));
+  fits.series.push_back(sized(true, 2400, 3.0, 0.03));
+  fits.series.push_back(sized(false, 800, 2.0, 0.04));
+  fits.series.push_back(sized(false, 1600, 2.1, 0.042));
+  fits.series.push_back(sized(false, 2400, 2.2, 0.044));
+  fits.series.push_back(sized(false, 3200, 2.4, 0.048));  // beyond the friction limit's sizes
+  auto checks = check_paper_claims(fits);
+  const auto grows = rows(checks, "C grows with N");
+  ASSERT_EQ(grows.size(), 2u);
+  const ClaimCheck* f = grows[0]->claim.find("friction only") != std::string::npos ? grows[0] : grows[1];
+  const ClaimCheck* d = f == grows[0] ? grows[1] : grows[0];
+  EXPECT_DOUBLE_EQ(f->measured, 3.0);
+  EXPECT_TRUE(f->agrees);
+  EXPECT_NE(f->measured_text.find("from N = 800 to 2400"), std::string::npos) << f->measured_text;
+  EXPECT_NEAR(d->measured, 1.2, 1e-12);  // its own range: 800 to 3200
+  EXPECT_NE(d->verdict.find("agrees (grows"), std::string::npos) << d->verdict;
+  const auto weaker = rows(checks, "much weaker with drag");
+  ASSERT_EQ(weaker.size(), 1u);
+  // over the common sizes 800 .. 2400: drag 1.1 against friction 3
+  EXPECT_NEAR(weaker[0]->measured, 1.1 / 3.0, 1e-12);
+  EXPECT_NE(weaker[0]->verdict.find("agrees (weaker with drag"), std::string::npos) << weaker[0]->verdict;
+
+  // a C that stays within its errors is "not resolved"; one that falls differs; a limit at one
+  // N, or the friction and drag groups of different systems, give no row
+  CampaignFits flat;
+  flat.series.push_back(sized(false, 800, 2.0, 0.1));
+  flat.series.push_back(sized(false, 1600, 2.05, 0.1));
+  flat.series.push_back(sized(true, 800, 2.0, 0.02));
+  flat.series.push_back(sized(true, 1600, 1.0, 0.01));
+  flat.series.back().base_key = "another system";
+  checks = check_paper_claims(flat);
+  const auto g = rows(checks, "C grows with N");
+  ASSERT_EQ(g.size(), 2u);
+  for (const ClaimCheck* c : g) {
+    if (c->claim.find("drag only") != std::string::npos)
+      EXPECT_NE(c->verdict.find("not resolved"), std::string::npos) << c->verdict;
+    else
+      EXPECT_NE(c->verdict.find("differs (falls"), std::string::npos) << c->verdict;
+  }
+  EXPECT_TRUE(rows(checks, "much weaker with drag").empty());
+}
+
 TEST(PaperClaims, TablesEscapeEveryTextCell) {
   CampaignFits fits;
   fits.series.push_back(series("a|b,c\"d\n", 2, 0, 1.5, 0.05));

@@ -104,6 +104,8 @@ fs::path make_fixture(const double lambda_c, const double b) {
                       {"sweep", {{"union", {{{"product", {{{"E_sp", {100, 1000}}}, {{"lambda", {0, "inf"}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             {{"product", {{{"E_sp", 100}}, {{"lambda", {{"logspace", {-3, 1, 9}}}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             {{"E_sp", 50}, {"lambda", 0.5}, {"w", {4, 5, 6}}},
+                                            // the limits at twice N (Fig. C(b): C grows with N, less with drag)
+                                            {{"product", {{{"N", 800}}, {{"E_sp", 100}}, {{"lambda", {0, "inf"}}}, {{"w", {4, 5, 6, 7, 8}}}}}},
                                             // the same group in a steeper hopper (Fig. 6): lambda_c four times smaller
                                             {{"product", {{{"E_sp", 100}}, {{"theta_w_deg", 60}}, {{"lambda", {0, "inf", 1e-3, 1e-2, 0.1, 1, 10}}},
                                                           {{"w", {4, 5, 6, 7, 8}}}}}},
@@ -125,7 +127,11 @@ fs::path make_fixture(const double lambda_c, const double b) {
                                               0.2 * std::log10(j["dp"]["K_l"].get<double>());
     // DP flows above the authors' flow threshold (1 % of their unit, 3.16), so that their
     // held-beta fit of k (the heat map's paper-form panel) sees every width
-    const double C = j["model"] == "sp" ? 0.4 : 4.0;
+    // The E_sp = 100 limits (Fig. C(b)) flow above that threshold too, their C growing with N
+    // as N with friction only and as N^(1/4) with drag
+    const bool sized_limit = j["model"] == "sp" && j["E_sp"].get<double>() == 100 && (lambda == 0 || std::isinf(lambda));
+    const double C = sized_limit ? 4.0 * std::pow(j["N"].get<double>() / 400, lambda == 0 ? 1.0 : 0.25)
+                                 : (j["model"] == "sp" ? 0.4 : 4.0);
     const double Q = beverloo_model(w, C, k, beta);
     const bool clogs = w < 3.5 && j.value("seed", 0) % 2 == 1;
     const json summary = {{"status", clogs ? "clogged" : "converged"}, {"Q", clogs ? 0.0 : Q}, {"Q_err", clogs ? 0.0 : 0.02 * Q},
@@ -507,7 +513,17 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
     EXPECT_NE(index.find(f.name + ".svg"), std::string::npos) << f.name;
     EXPECT_NE(index.find(f.name + ".png"), std::string::npos) << f.name;
   }
-  EXPECT_EQ(made, 11);  // Q(w), collapse, beta(lambda), lambda_c(theta_w), k(E_sp), k(K_b), k(K_l, K_b), profiles, the three regimes, clog survival, Q'(w)
+  EXPECT_EQ(made, 12);  // Q(w), collapse, beta(lambda), lambda_c(theta_w), k(E_sp), k(K_b), k(K_l, K_b), C(N), profiles, the three regimes, clog survival, Q'(w)
+  // Fig. C(b): C(N) / C(400) of the held fits, 2 with friction only and 2^(1/4) with drag only
+  const std::string c_vs_N = read(out / "C_vs_N.dat");
+  const auto friction_rows = block_rows(c_vs_N, "friction only: N C/C(N_min) err, beta held at 1.5");
+  ASSERT_EQ(friction_rows.size(), 2u) << c_vs_N;
+  EXPECT_EQ(friction_rows[0].substr(0, 6), "400 1 ") << c_vs_N;
+  EXPECT_NEAR(std::stod(friction_rows[1].substr(4)), 2.0, 1e-6) << c_vs_N;
+  const auto drag_rows = block_rows(c_vs_N, "drag only: N C/C(N_min) err, beta held at 0.5");
+  ASSERT_EQ(drag_rows.size(), 2u) << c_vs_N;
+  EXPECT_NEAR(std::stod(drag_rows[1].substr(4)), std::pow(2.0, 0.25), 1e-6) << c_vs_N;
+  EXPECT_FALSE(block_rows(c_vs_N, "friction only: N C/C(N_min) err, free fit").empty()) << c_vs_N;
   // the fits, through the SQL views
   db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
   db::Statement st = db.prepare("SELECT beta, k, C FROM beverloo_fits WHERE E_sp = 1000 AND mu = 0");

@@ -93,6 +93,9 @@ struct Series {
   /// fitted from (Crossover::spread).
   std::map<int, BeverlooFit> replica_fit;
   double k_at_beta_lo_replica_spread = NAN, k_at_beta_hi_replica_spread = NAN;
+  /// The same for the held fits' C, as the spread of ln C (a relative spread): what a ratio of
+  /// two Cs (Appendix B's limits, Appendix C's growth with N) is judged by beside the fits' errors.
+  double log_C_at_beta_lo_replica_spread = NAN, log_C_at_beta_hi_replica_spread = NAN;
   /// Clogging as a result: per w, the time to a clog over the replicas (Kaplan-Meier, runs that
   /// ended flowing censored at their end); every w of a series in which some run clogged.
   struct ClogPoint {

@@ -514,6 +514,12 @@ struct HeatmapLimit {
   double spread(const Series& s) const { return drag ? s.k_at_beta_lo_replica_spread : s.k_at_beta_hi_replica_spread; }
   bool holds(const Series& s) const { return drag ? std::isinf(s.lambda) : s.lambda == 0; }
   const char* held_text() const { return drag ? " (beta held at 1/2)" : " (beta held at 3/2)"; }
+  /// the relative sigma of the held fit's C: the larger of its error and the replicas' spread of ln C
+  double C_rel_sigma(const Series& s) const {
+    const BeverlooFit& fit = *held(s);
+    const double spread = drag ? s.log_C_at_beta_lo_replica_spread : s.log_C_at_beta_hi_replica_spread;
+    return std::isnan(spread) ? fit.C_err / fit.C : std::max(fit.C_err / fit.C, spread);
+  }
 };
 
 /// k of a limit's series as the paper fits it (beta held), sigma the larger of the held fit's
@@ -627,8 +633,9 @@ void hard_limit_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       c.subject = d.label + " / " + f.label;
       c.paper = "~3.5 (0.42 / 0.12)";
       c.measured = cd.C / cf.C;
-      c.sigma = c.measured * std::hypot(cd.C_err / cd.C, cf.C_err / cf.C);
-      c.measured_text = format_with_error(c.measured, c.sigma, " +- ");
+      c.sigma = c.measured * std::hypot(drag.C_rel_sigma(d), friction.C_rel_sigma(f));
+      c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (C " + format_value(cd.C, 3) + " / " +
+                        format_value(cf.C, 3) + "; sigma from the held fits' errors or the replicas' spread of C, the larger)";
       judge(c, 0.42 / 0.12);
       out.push_back(c);
     }
@@ -651,9 +658,9 @@ void prefactor_growth_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
     const std::optional<BeverlooFit>& h = s.lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo;
     return h && h->C > 0 && h->C_err > 0 ? &*h : nullptr;
   };
+  auto rel_sigma = [](const Series& s) { return HeatmapLimit{s.lambda != 0}.C_rel_sigma(s); };
   auto growth = [&](const Series& lo, const Series& hi) {
-    const BeverlooFit &a = *held(lo), &b = *held(hi);
-    return Growth{&lo, &hi, std::log(b.C / a.C), std::hypot(a.C_err / a.C, b.C_err / b.C)};
+    return Growth{&lo, &hi, std::log(held(hi)->C / held(lo)->C), std::hypot(rel_sigma(lo), rel_sigma(hi))};
   };
   std::map<std::string, std::map<int, const Series*>> groups;  // size_free_key -> N -> series
   for (const Series& s : fits.series)

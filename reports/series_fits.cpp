@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace beverloo {
 namespace {
@@ -45,7 +46,7 @@ void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t w
   std::map<int, std::map<double, const RunRecord*>> by_replica;
   for (const RunRecord& r : runs)
     if (!r.clogged && r.Q > 0 && r.Q_err > 0) by_replica[r.replica][r.w] = &r;
-  std::vector<double> betas, ks, ks_lo, ks_hi;
+  std::vector<double> betas, ks, ks_lo, ks_hi, log_Cs_lo, log_Cs_hi;
   for (const auto& [replica, pts] : by_replica) {
     if (pts.size() != widths) continue;
     std::vector<double> rw, rq, re;
@@ -62,9 +63,12 @@ void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t w
     } catch (const FitError&) {
     }
     if (s.rate_is_c0()) continue;  // no authors' fits of a drain's c0 t0
-    for (auto [beta, out] : {std::pair{s.dimension - 1.5, &ks_lo}, std::pair{s.dimension - 0.5, &ks_hi}}) {
+    for (auto [beta, out, log_C] :
+         {std::tuple{s.dimension - 1.5, &ks_lo, &log_Cs_lo}, std::tuple{s.dimension - 0.5, &ks_hi, &log_Cs_hi}}) {
       try {
-        out->push_back(fit_beverloo_fixed_beta(rw, rq, beta, BoundedFitOptions::authors()).k);
+        const BeverlooFit held = fit_beverloo_fixed_beta(rw, rq, beta, BoundedFitOptions::authors());
+        out->push_back(held.k);
+        if (held.C > 0) log_C->push_back(std::log(held.C));
       } catch (const FitError&) {
       }
     }
@@ -74,6 +78,8 @@ void replica_spread(Series& s, const std::vector<RunRecord>& runs, std::size_t w
   s.k_replica_spread = sample_sd(ks);
   s.k_at_beta_lo_replica_spread = sample_sd(ks_lo);
   s.k_at_beta_hi_replica_spread = sample_sd(ks_hi);
+  s.log_C_at_beta_lo_replica_spread = sample_sd(log_Cs_lo);
+  s.log_C_at_beta_hi_replica_spread = sample_sd(log_Cs_hi);
 }
 
 /// Per w, Kaplan-Meier over the replicas, for every w of a series in which some run clogged.

@@ -614,6 +614,13 @@ TEST(PaperClaims, AppendixBHardLimitKOfEachLimitAndTheRatioOfTheirCWithBetaHeld)
   EXPECT_DOUBLE_EQ(ratio->measured, 5.0);
   EXPECT_NEAR(ratio->sigma, 5.0 * std::hypot(0.05, 0.04), 1e-12);
   EXPECT_EQ(ratio->verdict, "differs (z = 4.7)");  // 5 against 0.42 / 0.12 = 3.5, sigma 0.32
+  // the replicas' spread of ln C widens sigma where it is the larger
+  fits.series[0].log_C_at_beta_hi_replica_spread = 0.2;
+  const auto wider = check_paper_claims(fits);
+  const ClaimCheck* r2 = find(wider, "as a ratio (beta held", fits.series[1].label + " / " + fits.series[0].label);
+  ASSERT_NE(r2, nullptr);
+  EXPECT_NEAR(r2->sigma, 5.0 * std::hypot(0.05, 0.2), 1e-12);
+  EXPECT_EQ(r2->verdict, "agrees (z = 1.5)");
   // the text's E_sp = 1e5 passes too; the ratio needs the two limits of one series
   CampaignFits text;
   text.series.push_back(sp_held(true, 1e5, 1.6, 0.1, 0.12, 0.01));

@@ -49,6 +49,11 @@ struct Series {
   /// The series' job without N (dissipation kept): the series that share it differ only in the
   /// number of particles (the paper's Appendix C, Fig. C(b))
   std::string size_free_key;
+  /// The series' job without the particle model and its own settings (model, E_sp,
+  /// sp_contact_law, dp.*, the wall stiffness E_w) and without the numerics and run settings
+  /// (run.*, dt, fire, max_overlap, skin, observables): SP and DP series that share it flow under
+  /// the same conditions (N, W, angles, dissipation, reinjection), the paper's Appendix B pairs.
+  std::string model_free_key;
   /// Replicas with a flow rate but no usable error (Q_err not > 0 or not a number): left out
   /// of the pooled points and the fit, and said so (never pooled as Q = 0 +- 0).
   int left_out = 0;

@@ -114,6 +114,10 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
       json sized = series_job;
       sized.erase("N");
       s.size_free_key = sha256_hex(sized.dump());
+      json system = series_job;  // what the model's own settings leave: the flow's conditions
+      for (const char* k : {"model", "E_sp", "sp_contact_law", "dp", "E_w", "run", "dt", "fire", "max_overlap", "skin", "observables"})
+        system.erase(k);
+      s.model_free_key = sha256_hex(system.dump());
       out.base_job_of[key] = base;
       series_jobs.push_back(series_job);
       std::ostringstream label;

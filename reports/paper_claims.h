@@ -9,7 +9,8 @@
 /// angle, and lies where the paper's Eq. 2 with its lambda_c(theta_w) puts it) and the rise of the
 /// drag-to-friction force ratio as it falls (Fig. 6b), the ratio of the prefactors C of the two limits, the corners of Fig. 7b's and
 /// 7c's k maps (smooth DP in each limit, k with beta held), Appendix B's hard-particle limit (SP at
-/// E_sp >= 1e5: k of each limit with beta held, the ratio of their C), and the experiments' beta and k.
+/// E_sp >= 1e5: k of each limit with beta held, the ratio of their C; rigid DP against hard SP,
+/// Q width by width), Appendix C's prefactor against N (Fig. C(b)), and the experiments' beta and k.
 /// Each check names the series or group it read, the paper's value, the measured one with its
 /// error (and the replicas' spread where there is one), and a verdict by one stated rule. The
 /// paper's values carry no errors ("~" in its text), so the rule uses the measurement's: agree

@@ -693,6 +693,61 @@ TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
   EXPECT_TRUE(rows(checks, "much weaker with drag").empty());
 }
 
+/// A series in the drag limit with Q at w = 4..8 as given (1 % errors), in flow conditions
+/// `conditions` (Series::model_free_key).
+Series drag_series_with_points(const std::string& label, const std::vector<double>& Q, const std::string& conditions) {
+  Series s = series(label, 2, INFINITY, 0.5, 0.05);
+  s.points.clear();
+  for (std::size_t i = 0; i < Q.size(); ++i) s.points.push_back({4.0 + i, Q[i], 0.01 * Q[i], 1, 0, 0});
+  s.model_free_key = conditions;
+  return s;
+}
+
+TEST(PaperClaims, AppendixBRigidDpAndHardSpGiveTheSameQWidthByWidth) {
+  auto rows = [](const std::vector<ClaimCheck>& checks) {
+    std::vector<const ClaimCheck*> out;
+    for (const ClaimCheck& c : checks)
+      if (c.claim.rfind("Appendix B: rigid DP", 0) == 0) out.push_back(&c);
+    return out;
+  };
+  const std::vector<double> q_sp = {2.6, 3.4, 4.0, 4.6, 5.1};
+  Series sp = drag_series_with_points("SP hard", q_sp, "system A");
+  sp.E_sp = 138889;
+  auto dp_with = [&](const std::string& label, double K_b, const std::vector<double>& factors, const std::string& conditions) {
+    std::vector<double> q;
+    for (std::size_t i = 0; i < q_sp.size(); ++i) q.push_back(q_sp[i] * factors[i]);
+    Series s = drag_series_with_points(label, q, conditions);
+    s.model = "dp_smooth", s.K_b = K_b, s.K_l = 88.29;
+    return s;
+  };
+  CampaignFits fits;
+  fits.series.push_back(sp);
+  fits.series.push_back(dp_with("DP rigid", 26.26, {0.9, 0.9, 0.9, 0.9, 0.9}, "system A"));  // 10 % below
+  fits.series.push_back(dp_with("DP soft", 2.626, {1, 1, 1, 1, 1}, "system A"));             // below the rigid K_b
+  fits.series.push_back(dp_with("DP elsewhere", 26.26, {1, 1, 1, 1, 1}, "system B"));        // other conditions
+  Series softer_sp = sp;
+  softer_sp.label = "SP E_sp=1.4e4", softer_sp.E_sp = 13888.9;
+  fits.series.push_back(softer_sp);
+  auto checks = check_paper_claims(fits);
+  auto r = rows(checks);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0]->subject, "DP rigid / SP hard");
+  EXPECT_NEAR(r[0]->measured, 0.9, 1e-12);
+  // sigma from the points' 1 % errors: sqrt(5 x 2 x 1e-4) / 5 of the log
+  EXPECT_NEAR(r[0]->sigma, 0.9 * std::sqrt(1e-3) / 5, 1e-12);
+  EXPECT_FALSE(r[0]->agrees);
+  EXPECT_NE(r[0]->measured_text.find("over 5 widths"), std::string::npos) << r[0]->measured_text;
+
+  // ratios that scatter about 1 by more than their errors: sigma from the scatter, agrees
+  fits.series[1] = dp_with("DP rigid", 26.26, {1.04, 0.96, 1.05, 0.95, 1.0}, "system A");
+  checks = check_paper_claims(fits);
+  r = rows(checks);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_TRUE(r[0]->agrees) << r[0]->verdict;
+  EXPECT_NE(r[0]->measured_text.find("sigma from the scatter"), std::string::npos) << r[0]->measured_text;
+  EXPECT_GT(r[0]->sigma, 0.9 * std::sqrt(1e-3) / 5 * 2);
+}
+
 TEST(PaperClaims, TablesEscapeEveryTextCell) {
   CampaignFits fits;
   fits.series.push_back(series("a|b,c\"d\n", 2, 0, 1.5, 0.05));

@@ -603,7 +603,7 @@ void heatmap_k_checks(const CampaignFits& fits, const HeatmapLimit& limit, std::
 /// stiffness test is E_sp >= 1e5: the paper's label 1e5 is E_sp = 1e5 in the text's units and
 /// 1.39e5 in the authors' (a label is ten times their spK), so both sets' hard series pass and
 /// no softer one does. Appendix B's DP side (K_b = 1e2) is a comparison of Q with SP's, not a
-/// value a fit gives, and is not checked here.
+/// value a fit gives: rigid_limit_model_checks.
 constexpr double kHardParticleEsp = 1e5;
 
 void hard_limit_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {

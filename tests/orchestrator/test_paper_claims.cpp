@@ -34,6 +34,14 @@ const ClaimCheck* find(const std::vector<ClaimCheck>& checks, const std::string&
   return nullptr;
 }
 
+/// Every check whose claim contains claim_part, in the table's order.
+std::vector<const ClaimCheck*> checks_about(const std::vector<ClaimCheck>& checks, const std::string& claim_part) {
+  std::vector<const ClaimCheck*> out;
+  for (const ClaimCheck& c : checks)
+    if (c.claim.find(claim_part) != std::string::npos) out.push_back(&c);
+  return out;
+}
+
 TEST(PaperClaims, LimitExponentsAreCheckedAgainstDMinusAHalfAndDMinusThreeHalves) {
   CampaignFits fits;
   fits.series.push_back(series("2D friction", 2, 0, 1.60, 0.04));     // 1.5: z = 2.5, differs
@@ -526,12 +534,7 @@ Series dp_friction_cell(double K_l, double K_b, double k_held, double k_err, dou
 }
 
 TEST(PaperClaims, Fig7bFrictionOnlyKIsBelowOneAtSoftKbAndNearOneAndAHalfAtStiffKb) {
-  auto fig7b = [](const std::vector<ClaimCheck>& checks) {
-    std::vector<const ClaimCheck*> out;
-    for (const ClaimCheck& c : checks)
-      if (c.claim.find("Fig. 7b") != std::string::npos) out.push_back(&c);
-    return out;
-  };
+  auto fig7b = [](const std::vector<ClaimCheck>& checks) { return checks_about(checks, "Fig. 7b"); };
   CampaignFits fits;
   fits.series.push_back(dp_friction_cell(8.829, 0.002626, 0.7, 0.2));      // below 1
   fits.series.push_back(dp_friction_cell(8.829, 26.26, 1.35, 0.05, 0.1));  // ~1.5: sigma 0.1 (spread), z = 1.5
@@ -582,12 +585,7 @@ Series sp_held(bool friction, double E_sp, double k_held, double k_err, double C
 }
 
 TEST(PaperClaims, AppendixBHardLimitKOfEachLimitAndTheRatioOfTheirCWithBetaHeld) {
-  auto appendix_b = [](const std::vector<ClaimCheck>& checks) {
-    std::vector<const ClaimCheck*> out;
-    for (const ClaimCheck& c : checks)
-      if (c.claim.find("Appendix B") != std::string::npos) out.push_back(&c);
-    return out;
-  };
+  auto appendix_b = [](const std::vector<ClaimCheck>& checks) { return checks_about(checks, "Appendix B"); };
   CampaignFits fits;
   fits.series.push_back(sp_held(true, 138889, 1.9, 0.1, 0.5, 0.02, 0.3));  // ~1.6: sigma 0.3 (spread), z = 1.0
   fits.series.push_back(sp_held(false, 138889, 2.6, 0.2, 2.5, 0.125));     // ~3.4: z = 4.0
@@ -642,12 +640,6 @@ Series sized(bool friction, int N, double C_held, double C_err) {
 }
 
 TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
-  auto rows = [](const std::vector<ClaimCheck>& checks, const std::string& part) {
-    std::vector<const ClaimCheck*> out;
-    for (const ClaimCheck& c : checks)
-      if (c.claim.find(part) != std::string::npos) out.push_back(&c);
-    return out;
-  };
   CampaignFits fits;
   // friction only: C 1 -> 3 from N = 800 to 2400 (1 % errors); drag only 2 -> 2.2 (2 % errors)
   fits.series.push_back(sized(true, 800, 1.0, 0.01));
@@ -658,7 +650,7 @@ TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
   fits.series.push_back(sized(false, 2400, 2.2, 0.044));
   fits.series.push_back(sized(false, 3200, 2.4, 0.048));  // beyond the friction limit's sizes
   auto checks = check_paper_claims(fits);
-  const auto grows = rows(checks, "C grows with N");
+  const auto grows = checks_about(checks, "C grows with N");
   ASSERT_EQ(grows.size(), 2u);
   const ClaimCheck* f = grows[0]->claim.find("friction only") != std::string::npos ? grows[0] : grows[1];
   const ClaimCheck* d = f == grows[0] ? grows[1] : grows[0];
@@ -667,7 +659,7 @@ TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
   EXPECT_NE(f->measured_text.find("from N = 800 to 2400"), std::string::npos) << f->measured_text;
   EXPECT_NEAR(d->measured, 1.2, 1e-12);  // its own range: 800 to 3200
   EXPECT_NE(d->verdict.find("agrees (grows"), std::string::npos) << d->verdict;
-  const auto weaker = rows(checks, "much weaker with drag");
+  const auto weaker = checks_about(checks, "much weaker with drag");
   ASSERT_EQ(weaker.size(), 1u);
   // over the common sizes 800 .. 2400: drag 1.1 against friction 3
   EXPECT_NEAR(weaker[0]->measured, 1.1 / 3.0, 1e-12);
@@ -682,7 +674,7 @@ TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
   flat.series.push_back(sized(true, 1600, 1.0, 0.01));
   flat.series.back().base_key = "another system";
   checks = check_paper_claims(flat);
-  const auto g = rows(checks, "C grows with N");
+  const auto g = checks_about(checks, "C grows with N");
   ASSERT_EQ(g.size(), 2u);
   for (const ClaimCheck* c : g) {
     if (c->claim.find("drag only") != std::string::npos)
@@ -690,7 +682,7 @@ TEST(PaperClaims, AppendixCPrefactorGrowsWithNAndLessWithDragThanWithFriction) {
     else
       EXPECT_NE(c->verdict.find("differs (falls"), std::string::npos) << c->verdict;
   }
-  EXPECT_TRUE(rows(checks, "much weaker with drag").empty());
+  EXPECT_TRUE(checks_about(checks, "much weaker with drag").empty());
 }
 
 /// A series in the drag limit with Q at w = 4..8 as given (1 % errors), in flow conditions
@@ -704,12 +696,7 @@ Series drag_series_with_points(const std::string& label, const std::vector<doubl
 }
 
 TEST(PaperClaims, AppendixBRigidDpAndHardSpGiveTheSameQWidthByWidth) {
-  auto rows = [](const std::vector<ClaimCheck>& checks) {
-    std::vector<const ClaimCheck*> out;
-    for (const ClaimCheck& c : checks)
-      if (c.claim.rfind("Appendix B: rigid DP", 0) == 0) out.push_back(&c);
-    return out;
-  };
+  auto rows = [](const std::vector<ClaimCheck>& checks) { return checks_about(checks, "Appendix B: rigid DP"); };
   const std::vector<double> q_sp = {2.6, 3.4, 4.0, 4.6, 5.1};
   Series sp = drag_series_with_points("SP hard", q_sp, "system A");
   sp.E_sp = 138889;

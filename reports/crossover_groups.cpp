@@ -59,19 +59,25 @@ void replica_spread(Crossover& g, const std::vector<const Series*>& fitted, cons
 
 /// A crossover fit whose covariance is singular (b's or lambda_c's error 0, or not finite) is
 /// not a measurement: a step too sharp for the lambdas (b -> 0) puts lambda_c wherever the one
-/// point on the step is matched, with an error that says nothing. Such a fit is dropped with a
-/// message saying why (and kept in `singular`, when given, for the adaptive planner); the group
-/// is then read at each lambda (Fig. 6a at one lambda).
+/// point on the step is matched, with an error that says nothing. Nor is one whose covariance is
+/// nearly singular: the free-plateau sigmoid on a step with no point inside it came out with
+/// lambda_c 0.031 +- 1e12 (the DP Fig. 6a campaign at 30 deg), finite but beyond any lambda a
+/// campaign holds. Such a fit is dropped with a message saying why (and kept in `singular`, when
+/// given, for the adaptive planner); the group is then read at each lambda (Fig. 6a at one
+/// lambda).
 void drop_if_degenerate(std::optional<CrossoverFit>& fit, std::string& message,
                         std::optional<CrossoverFit>* singular = nullptr) {
   if (!fit) return;
+  // beyond these the fit says nothing: lambda_c anywhere in six decades, b unknown 100 times over
+  constexpr double kMaxLog10LambdaCErr = 3.0, kMaxRelativeBErr = 100.0;
   const bool determined = fit->b_err > 0 && std::isfinite(fit->b_err) && fit->log10_lambda_c_err > 0 &&
-                          std::isfinite(fit->log10_lambda_c_err);
+                          std::isfinite(fit->log10_lambda_c_err) && fit->log10_lambda_c_err < kMaxLog10LambdaCErr &&
+                          fit->b_err < kMaxRelativeBErr * std::fabs(fit->b);
   if (determined) return;
   char b[200];
   std::snprintf(b, sizeof b,
-                "not determined: a singular fit (lambda_c %.3g, b %.3g with no error): the lambdas do not resolve the "
-                "step's width",
+                "not determined: a singular fit (lambda_c %.3g, b %.3g with no usable error): the lambdas do not "
+                "resolve the step's width",
                 fit->lambda_c, fit->b);
   message = b;
   if (singular) *singular = fit;

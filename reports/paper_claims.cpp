@@ -260,43 +260,58 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
 /// (Crossover::angle_family), with each crossover fit. The claim is a direction, so the verdict
 /// is one: a fall when the ratio lies below 1 by more than kClaimAgreeSigmas sigma (sigma of
 /// log10 of the ratio, from both lambda_c), a rise when above it by as much, and neither is
-/// claimed when the ratio is within that of 1.
+/// claimed when the ratio is within that of 1. Below 30 deg the paper has a plateau ("~5e-3 for
+/// theta_w <= 30"), checked as lambda_c(theta_w) / lambda_c(30): it agrees within
+/// kClaimAgreeSigmas sigma of 1 and differs, falling or rising, beyond.
 void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   for (const auto& [family, by_theta] : angle_families(fits.crossovers, /*fitted_only=*/false)) {
-    const auto right = by_theta.find(90.0);
-    if (right == by_theta.end()) continue;
-    for (const auto& [theta, g] : by_theta) {
-      if (theta >= 90) continue;
+    auto compare = [&](double theta, const Crossover& g, double reference, bool plateau) {
+      const auto ref = by_theta.find(reference);
+      if (ref == by_theta.end()) return;
       for (const bool free : {false, true}) {
-        const std::optional<CrossoverFit>& at = free ? g->fit_free : g->fit;
-        const std::optional<CrossoverFit>& at_90 = free ? right->second->fit_free : right->second->fit;
-        if (!at || !at_90 || !(at->lambda_c > 0) || !(at_90->lambda_c > 0)) continue;
+        const std::optional<CrossoverFit>& at = free ? g.fit_free : g.fit;
+        const std::optional<CrossoverFit>& at_ref = free ? ref->second->fit_free : ref->second->fit;
+        if (!at || !at_ref || !(at->lambda_c > 0) || !(at_ref->lambda_c > 0)) continue;
+        const Crossover::ReplicaSpread &spread = free ? g.spread_free : g.spread,
+                                       &spread_ref = free ? ref->second->spread_free : ref->second->spread;
         ClaimCheck c;
-        c.claim = std::string("lambda_c falls as theta_w falls (Fig. 6), ") +
-                  (free ? "the sigmoid with free plateaus" : "the paper's sigmoid") + ": lambda_c(theta_w) / lambda_c(90)";
-        c.subject = g->label + " at theta_w = " + format_value(theta, 3);
-        c.paper = theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
-        const double log_ratio = at->log10_lambda_c - at_90->log10_lambda_c;
-        const double log_sigma = std::hypot(log10_lambda_c_sigma(*at, free ? g->spread_free : g->spread),
-                                            log10_lambda_c_sigma(*at_90, free ? right->second->spread_free : right->second->spread));
+        const std::string fit_name = free ? "the sigmoid with free plateaus" : "the paper's sigmoid";
+        const std::string ref_text = format_value(reference, 3);
+        c.claim = plateau ? "lambda_c stops falling below theta_w = 30 deg (Fig. 6, a plateau ~5e-3), " + fit_name +
+                                ": lambda_c(theta_w) / lambda_c(30)"
+                          : "lambda_c falls as theta_w falls (Fig. 6), " + fit_name + ": lambda_c(theta_w) / lambda_c(90)";
+        c.subject = g.label + " at theta_w = " + format_value(theta, 3);
+        c.paper = plateau ? "~1 (a plateau)" : theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
+        const double log_ratio = at->log10_lambda_c - at_ref->log10_lambda_c;
+        const double log_sigma =
+            std::hypot(log10_lambda_c_sigma(*at, spread), log10_lambda_c_sigma(*at_ref, spread_ref));
         c.measured = std::pow(10.0, log_ratio);
         c.sigma = c.measured * std::log(10.0) * log_sigma;
         c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (" +
                           format_with_error(at->lambda_c, at->lambda_c_err, " +- ") + " against " +
-                          format_with_error(at_90->lambda_c, at_90->lambda_c_err, " +- ") + ")";
-        const Crossover::ReplicaSpread &spread = free ? g->spread_free : g->spread,
-                                       &spread_90 = free ? right->second->spread_free : right->second->spread;
-        if (!std::isnan(spread.log10_lambda_c) || !std::isnan(spread_90.log10_lambda_c))
+                          format_with_error(at_ref->lambda_c, at_ref->lambda_c_err, " +- ") +
+                          (plateau ? " at 30 deg" : "") + ")";
+        if (!std::isnan(spread.log10_lambda_c) || !std::isnan(spread_ref.log10_lambda_c))
           c.measured_text += "; spread of log10 lambda_c over replicas " + spread_or_none(spread) + " and " +
-                             spread_or_none(spread_90) + " at 90 deg";
+                             spread_or_none(spread_ref) + " at " + ref_text + " deg";
         if (!(log_sigma > 0)) {
           c.verdict = "not judged: no error";
+        } else if (plateau) {
+          const double z = std::fabs(log_ratio) / log_sigma;
+          c.judged = true;
+          c.agrees = z <= kClaimAgreeSigmas;
+          c.verdict = std::string(c.agrees ? "agrees" : log_ratio > 0 ? "differs (rises" : "differs (falls") +
+                      (c.agrees ? " (z = " : ", z = ") + z_text(z) + ")";
         } else {
           judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
         }
         out.push_back(c);
       }
-    }
+    };
+    for (const auto& [theta, g] : by_theta)
+      if (theta < 90) compare(theta, *g, 90, false);
+    for (const auto& [theta, g] : by_theta)
+      if (theta < 30) compare(theta, *g, 30, true);
   }
 }
 

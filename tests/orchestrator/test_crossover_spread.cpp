@@ -127,6 +127,41 @@ TEST(CrossoverFitOfAGroup, AStepSharperThanTheLambdasResolveIsNotDetermined) {
   EXPECT_NEAR(gentle.front().fit->lambda_c, 0.03, 1e-4);
 }
 
+TEST(CrossoverFitOfAGroup, AFreePlateauFitWithAnErrorOfManyDecadesIsNotDetermined) {
+  // the DP Fig. 6a campaign at 30 deg (docs/paper.md, five lambdas): three exponents on the
+  // friction side, then a step with no point inside it; the free-plateau sigmoid matched it with
+  // lambda_c = 0.031 +- 1e12, which is no measurement. The paper's sigmoid keeps its fit.
+  const double measured[5][3] = {
+      {1e-3, 1.21, 0.069}, {1e-2, 1.271, 0.077}, {0.01778, 1.323, 0.11}, {0.03162, 0.6943, 0.05}, {0.1, 0.4652, 0.1}};
+  std::vector<Series> series;
+  for (const auto& [lambda, beta, beta_err] : measured) {
+    Series s;
+    s.dimension = 2, s.N = 1600, s.zeta = 1, s.mu = 1 / lambda, s.lambda = lambda;
+    s.key = "series lambda=" + std::to_string(lambda);
+    s.base_key = s.angle_free_key = "2D DP";
+    std::vector<RunRecord> runs;
+    for (double w = 4; w <= 10; w += 1) {
+      RunRecord run;
+      run.w = w;
+      run.Q = 5 * std::pow(w - 1.5, beta);
+      run.Q_err = 0.01 * run.Q;
+      runs.push_back(run);
+    }
+    fit_series(s, runs);
+    s.fit->beta = beta, s.fit->beta_err = beta_err;
+    series.push_back(s);
+  }
+  const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(groups.size(), 1u);
+  const Crossover& g = groups.front();
+  EXPECT_FALSE(g.fit_free) << "lambda_c " << g.fit_free->lambda_c << " +- " << g.fit_free->lambda_c_err;
+  EXPECT_EQ(g.message_free.rfind("not determined: a singular fit", 0), 0u) << g.message_free;
+  ASSERT_TRUE(g.fit) << g.message;
+  EXPECT_GT(g.fit->lambda_c, 0.0178);
+  EXPECT_LT(g.fit->lambda_c, 0.0316);
+  EXPECT_LT(g.fit->log10_lambda_c_err, 0.1);
+}
+
 TEST(CrossoverFitOfAGroup, ASeriesThatFollowsNoBeverlooLawStaysOutOfTheSigmoid) {
   // six lambdas on the replicas' sigmoids; then the lowest one's fit made that of a Q(w) that
   // follows no Beverloo law with k >= 0 (Fig. 6a's DP at 90 deg, lambda = 1e-3: beta 3.4 with

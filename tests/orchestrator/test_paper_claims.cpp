@@ -262,6 +262,46 @@ TEST(PaperClaims, LambdaCsFallWithTheAngleIsADirectionJudgedBeyondTwoSigma) {
   EXPECT_EQ(find(checks, "free plateaus: lambda_c(theta_w)", "A at theta_w = 60"), nullptr) << "no free fit";
 }
 
+TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees) {
+  CampaignFits fits;
+  // family A: 20 deg level with 30 (the paper's plateau); B: 20 deg well below 30; C: no 30 deg
+  const std::vector<std::tuple<std::string, double, double, double>> groups = {
+      {"A", 90, 0.05, 0.05}, {"A", 30, 0.006, 0.05}, {"A", 20, 0.0055, 0.05}, {"B", 90, 0.04, 0.02},
+      {"B", 30, 0.021, 0.02}, {"B", 20, 0.01, 0.02}, {"C", 90, 0.05, 0.05}, {"C", 20, 0.006, 0.05}};
+  fits.series.reserve(groups.size());
+  for (const auto& [family, theta, lambda_c, log10_err] : groups) {
+    Series s = series(family, 2, 0.05, 1.0, 0.05);
+    s.theta_left = s.theta_right = theta;
+    fits.series.push_back(s);
+    Crossover g;
+    g.label = family;
+    g.angle_family = family;
+    g.finite = {&fits.series.back()};
+    CrossoverFit f;
+    f.lambda_c = lambda_c, f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = log10_err;
+    f.lambda_c_err = lambda_c * std::log(10.0) * log10_err;
+    g.fit = f;
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const std::string claim = "lambda_c stops falling below theta_w = 30 deg";
+  const ClaimCheck* a = find(checks, claim, "A at theta_w = 20");
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->paper, "~1 (a plateau)");
+  EXPECT_NEAR(a->measured, 0.0055 / 0.006, 1e-12);
+  EXPECT_TRUE(a->agrees) << a->verdict;  // log10 0.917 = -0.038 over 0.071: z = 0.5
+  EXPECT_EQ(a->verdict, "agrees (z = 0.5)");
+  const ClaimCheck* b = find(checks, claim, "B at theta_w = 20");
+  ASSERT_NE(b, nullptr);
+  EXPECT_TRUE(b->judged);
+  EXPECT_FALSE(b->agrees);  // log10(0.021 / 0.01) = 0.322 over 0.028: z = 11.4
+  EXPECT_EQ(b->verdict, "differs (falls, z = 11.4)");
+  EXPECT_EQ(find(checks, claim, "C at theta_w = 20"), nullptr) << "no group at 30 deg to compare with";
+  EXPECT_EQ(find(checks, claim, "A at theta_w = 30"), nullptr) << "30 deg is the reference, not a subject";
+  // the fall from 90 deg is still read for every angle below it
+  EXPECT_NE(find(checks, "lambda_c falls as theta_w falls", "C at theta_w = 20"), nullptr);
+}
+
 TEST(PaperClaims, Fig6bForceRatioRisesAsTheAngleFallsAndStopsBelowThirtyDegreesWithoutAnyFit) {
   CampaignFits fits;
   // one unfitted series at lambda = 1e-2 per angle (a ratio needs no Beverloo fit): family A

@@ -1,7 +1,10 @@
 // beta versus lambda per crossover group, with the fitted sigmoid (the paper's fixed plateaus,
 // and free ones), the two limits, and the paper's stated values (its plateaus d - 1/2 and
 // d - 3/2 and lambda_c ~ 0.05 in 2D, ~ 0.07 in 3D) in grey; never rescaled (docs/paper.md).
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "core/text_escape.h"
 #include "figure.h"
@@ -9,13 +12,46 @@
 
 namespace beverloo::figures {
 
+// The frame is the paper's (its plateaus d - 1/2 and d - 3/2, kFrameMargin either side) widened
+// to every exponent that is measured, with its error bar, the limits' included. An exponent
+// with an error above kFrameBetaErr (beta unknown by more than the crossover's whole
+// half-height) does not widen it: one such series (the DP campaign's beta = 6.2 +- 6.5 at 20
+// deg, lambda = 1e-3) flattened every sigmoid into a line. It is left beyond the frame and
+// counted.
+std::optional<BetaFrame> beta_vs_lambda_frame(const CampaignFits& fits) {
+  constexpr double kFrameBetaErr = 0.5, kFrameMargin = 0.2;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Crossover& g : fits.crossovers) {
+    if (g.finite.empty()) continue;
+    lo = std::min(lo, g.dimension - 1.5), hi = std::max(hi, g.dimension - 0.5);
+    std::vector<const Series*> drawn(g.finite.begin(), g.finite.end());
+    for (const Series* lim : {g.limit0, g.limit_inf})
+      if (lim) drawn.push_back(lim);
+    for (const Series* s : drawn)
+      if (s->fit && s->fit->beta_err <= kFrameBetaErr)
+        lo = std::min(lo, s->fit->beta - s->fit->beta_err), hi = std::max(hi, s->fit->beta + s->fit->beta_err);
+  }
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
+  BetaFrame frame{lo - kFrameMargin, hi + kFrameMargin, 0};
+  for (const Crossover& g : fits.crossovers)
+    for (const Series* s : g.finite)
+      if (s->fit && (s->fit->beta < frame.lo || s->fit->beta > frame.hi)) ++frame.beyond;
+  return frame;
+}
+
 ReportFigure beta_vs_lambda(const FigureContext& c) {
   Figure f("beta_vs_lambda", "Exponent beta versus lambda = zeta/mu, with beta = d - 1 - tanh[log10(lambda/lambda_c)/b]/2",
-           "lambda (dimensionless)", "beta", "set logscale x\nset format x '10^{%L}'\n"
-           // the paper's plateaus are often the data's bounds: keep them off the frame
-           "set offsets 0, 0, 0.1, 0.1\n");
+           "lambda (dimensionless)", "beta", "set logscale x\nset format x '10^{%L}'\n");
   int n = 0;
   for (const Crossover& g : c.fits.crossovers) n += !g.finite.empty();
+  if (const std::optional<BetaFrame> frame = beta_vs_lambda_frame(c.fits)) {
+    f.extra += "set yrange [" + num(frame->lo) + ":" + num(frame->hi) + "]\n";
+    if (frame->beyond > 0)
+      f.extra += "set label " +
+                 gnuplot_string(std::to_string(frame->beyond) + (frame->beyond == 1 ? " exponent" : " exponents") +
+                                " with an error above 0.5 beyond the frame (beverloo_fits.md)") +
+                 " at graph 0.02, graph 0.04 font ',9' noenhanced\n";
+  }
   int k = 0;
   bool paper_drawn[4] = {false, false, false, false};
   for (const Crossover& g : c.fits.crossovers) {

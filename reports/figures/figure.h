@@ -5,6 +5,7 @@
 /// restyle it); a FigureMaker turns a campaign's fits and database into one Figure or says
 /// what data it lacks. The report's list of makers is figure_list.cpp.
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -56,6 +57,15 @@ ReportFigure q_vs_w(const FigureContext& c);
 ReportFigure q_prime_vs_w(const FigureContext& c);
 ReportFigure loglog_collapse(const FigureContext& c);
 ReportFigure beta_vs_lambda(const FigureContext& c);
+
+/// The y range of beta_vs_lambda: the paper's plateaus widened to every exponent measured to
+/// 0.5 or better (with its error bar), 0.2 either side; `beyond` counts the exponents left
+/// outside. None without a beta(lambda) group.
+struct BetaFrame {
+  double lo, hi;
+  int beyond;
+};
+std::optional<BetaFrame> beta_vs_lambda_frame(const CampaignFits& fits);
 ReportFigure lambda_c_vs_theta(const FigureContext& c);
 ReportFigure k_vs_Esp(const FigureContext& c);
 ReportFigure k_vs_Kb(const FigureContext& c);

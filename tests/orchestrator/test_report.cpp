@@ -15,6 +15,7 @@
 #include "orchestrator/campaign/store.h"
 #include "orchestrator/db/migrations.h"
 #include "reports/campaign_fits.h"
+#include "reports/figures/figure.h"
 #include "reports/fit.h"
 #include "reports/report.h"
 
@@ -583,6 +584,39 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   EXPECT_EQ(db.scalar_int("SELECT count(*) FROM clog_statistics WHERE clogs = 0 AND p_clog = 0"), 5)
       << "the series' other widths: no clog";
   fs::remove_all(dir);
+}
+
+/// beta_vs_lambda's frame is the paper's plateaus widened to the measured exponents; one with an
+/// error above 0.5 (the DP campaign's 6.2 +- 6.5) does not widen it and is counted as beyond.
+TEST(Report, BetaOfLambdaFrameIgnoresExponentsThatAreNotMeasured) {
+  CampaignFits fits;
+  auto add = [&](double lambda, double beta, double beta_err) {
+    Series s;
+    s.dimension = 2, s.lambda = lambda;
+    BeverlooFit f;
+    f.beta = beta, f.beta_err = beta_err;
+    s.fit = f;
+    fits.series.push_back(s);
+  };
+  fits.series.reserve(5);
+  add(1e-3, 6.2, 6.5);    // not measured
+  add(1e-2, 1.70, 0.05);  // above the paper's 3/2
+  add(0.1, 0.45, 0.05);
+  add(1.0, 0.40, 0.7);    // not measured, inside the frame
+  Crossover g;
+  g.dimension = 2;
+  for (const Series& s : fits.series) g.finite.push_back(&s);
+  fits.crossovers.push_back(g);
+  const std::optional<figures::BetaFrame> frame = figures::beta_vs_lambda_frame(fits);
+  ASSERT_TRUE(frame);
+  EXPECT_NEAR(frame->hi, 1.75 + 0.2, 1e-12);
+  EXPECT_NEAR(frame->lo, 0.40 - 0.2, 1e-12);
+  EXPECT_EQ(frame->beyond, 1);
+  // a limit measured below the rest widens the frame too
+  add(0, 0.3, 0.02);  // (reserve above: the group's pointers stay valid)
+  fits.crossovers.front().limit_inf = &fits.series.back();
+  EXPECT_NEAR(figures::beta_vs_lambda_frame(fits)->lo, 0.28 - 0.2, 1e-12);
+  EXPECT_FALSE(figures::beta_vs_lambda_frame(CampaignFits{})) << "no group, no frame";
 }
 
 }  // namespace

@@ -49,6 +49,15 @@ void judge_direction(ClaimCheck& c, double z, const char* claimed, const char* o
                        : "not resolved (within " + z_text(std::fabs(z)) + " sigma of no change)";
 }
 
+/// The verdict on a claimed absence of change (a plateau): z, the measured change in sigma,
+/// positive for a rise. Within kClaimAgreeSigmas it agrees; beyond, it differs and says which way.
+void judge_no_change(ClaimCheck& c, double z) {
+  c.judged = true;
+  c.agrees = std::fabs(z) <= kClaimAgreeSigmas;
+  c.verdict = c.agrees ? "agrees (z = " + z_text(std::fabs(z)) + ")"
+                       : std::string(z > 0 ? "differs (rises" : "differs (falls") + ", z = " + z_text(std::fabs(z)) + ")";
+}
+
 /// The sigma of a series' exponent for a verdict: the larger of the fit error and the spread
 /// over replicas (the fit error alone without replicas).
 double beta_sigma(const Series& s) {
@@ -297,11 +306,7 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         if (!(log_sigma > 0)) {
           c.verdict = "not judged: no error";
         } else if (plateau) {
-          const double z = std::fabs(log_ratio) / log_sigma;
-          c.judged = true;
-          c.agrees = z <= kClaimAgreeSigmas;
-          c.verdict = std::string(c.agrees ? "agrees" : log_ratio > 0 ? "differs (rises" : "differs (falls") +
-                      (c.agrees ? " (z = " : ", z = ") + z_text(z) + ")";
+          judge_no_change(c, log_ratio / log_sigma);
         } else {
           judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
         }
@@ -382,11 +387,7 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) 
       if (!(log_sigma > 0)) {
         c.verdict = "not judged: no error (a series of one run at an angle, from an engine before force_ratio_err)";
       } else if (plateau) {
-        const double z = std::fabs(log_ratio) / log_sigma;
-        c.judged = true;
-        c.agrees = z <= kClaimAgreeSigmas;
-        c.verdict = std::string(c.agrees ? "agrees" : log_ratio > 0 ? "differs (rises" : "differs (falls") +
-                    (c.agrees ? " (z = " : ", z = ") + z_text(z) + ")";
+        judge_no_change(c, log_ratio / log_sigma);
       } else {
         judge_direction(c, log_ratio / log_sigma, "rises", "falls");
       }

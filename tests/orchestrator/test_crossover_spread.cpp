@@ -46,6 +46,25 @@ std::vector<Series> three_replica_group(int skip_replica) {
   return out;
 }
 
+/// One series on the text's lambda axis (zeta = 1, mu = 1 / lambda), one run per width whose
+/// flow follows Q = 5 (w - 1.5)^beta exactly (1 % errors) at w = 4..10, fitted.
+Series one_run_series(double lambda, double beta) {
+  Series s;
+  s.dimension = 2, s.N = 1600, s.zeta = 1, s.mu = 1 / lambda, s.lambda = lambda;
+  s.key = "series lambda=" + std::to_string(lambda);
+  s.base_key = s.angle_free_key = "2D SP";
+  std::vector<RunRecord> runs;
+  for (double w = 4; w <= 10; w += 1) {
+    RunRecord run;
+    run.w = w;
+    run.Q = 5 * std::pow(w - 1.5, beta);
+    run.Q_err = 0.01 * run.Q;
+    runs.push_back(run);
+  }
+  fit_series(s, runs);
+  return s;
+}
+
 std::map<std::string, nlohmann::json> base_jobs(const std::vector<Series>& series) {
   std::map<std::string, nlohmann::json> out;
   for (const Series& s : series) out[s.key] = nlohmann::json::object();
@@ -93,22 +112,7 @@ TEST(CrossoverFitOfAGroup, AStepSharperThanTheLambdasResolveIsNotDetermined) {
   // with a singular covariance: no lambda_c is reported
   std::vector<Series> series;
   const std::vector<std::pair<double, double>> at = {{1e-3, 1.5}, {1e-2, 1.2}, {1e-1, 0.5}};
-  for (const auto& [lambda, beta] : at) {
-    Series s;
-    s.dimension = 2, s.N = 1600, s.zeta = 1, s.mu = 1 / lambda, s.lambda = lambda;
-    s.key = "series lambda=" + std::to_string(lambda);
-    s.base_key = s.angle_free_key = "2D SP";
-    std::vector<RunRecord> runs;
-    for (double w = 4; w <= 10; w += 1) {
-      RunRecord run;
-      run.w = w;
-      run.Q = 5 * std::pow(w - 1.5, beta);
-      run.Q_err = 0.01 * run.Q;
-      runs.push_back(run);
-    }
-    fit_series(s, runs);
-    series.push_back(s);
-  }
+  for (const auto& [lambda, beta] : at) series.push_back(one_run_series(lambda, beta));
   // the exponents of the DP Fig. 6a campaign at 20 deg (docs/paper.md): the lowest lambda's
   // free fit is undetermined (6.2 +- 6.5), the step between the other two is matched exactly
   const double measured[3][2] = {{6.217, 6.5}, {1.198, 0.079}, {0.4734, 0.09}};
@@ -135,21 +139,8 @@ TEST(CrossoverFitOfAGroup, AFreePlateauFitWithAnErrorOfManyDecadesIsNotDetermine
       {1e-3, 1.21, 0.069}, {1e-2, 1.271, 0.077}, {0.01778, 1.323, 0.11}, {0.03162, 0.6943, 0.05}, {0.1, 0.4652, 0.1}};
   std::vector<Series> series;
   for (const auto& [lambda, beta, beta_err] : measured) {
-    Series s;
-    s.dimension = 2, s.N = 1600, s.zeta = 1, s.mu = 1 / lambda, s.lambda = lambda;
-    s.key = "series lambda=" + std::to_string(lambda);
-    s.base_key = s.angle_free_key = "2D DP";
-    std::vector<RunRecord> runs;
-    for (double w = 4; w <= 10; w += 1) {
-      RunRecord run;
-      run.w = w;
-      run.Q = 5 * std::pow(w - 1.5, beta);
-      run.Q_err = 0.01 * run.Q;
-      runs.push_back(run);
-    }
-    fit_series(s, runs);
-    s.fit->beta = beta, s.fit->beta_err = beta_err;
-    series.push_back(s);
+    series.push_back(one_run_series(lambda, beta));
+    series.back().fit->beta = beta, series.back().fit->beta_err = beta_err;
   }
   const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
   ASSERT_EQ(groups.size(), 1u);

@@ -28,6 +28,33 @@ Series series(const std::string& label, int dimension, double lambda, double bet
   return s;
 }
 
+/// A crossover group of one series named after its angle family (groups that differ only in
+/// the hopper angle share it).
+Crossover angle_group(const std::string& family, const Series& only) {
+  Crossover g;
+  g.label = family;
+  g.angle_family = family;
+  g.finite = {&only};
+  return g;
+}
+
+/// One crossover group per (family, theta_w, lambda_c, error of log10 lambda_c), each with one
+/// series at that angle and the paper's sigmoid fitted: groups that differ only in the angle.
+void add_angle_groups(CampaignFits& fits, const std::vector<std::tuple<std::string, double, double, double>>& groups) {
+  fits.series.reserve(groups.size());  // the groups point into it
+  for (const auto& [family, theta, lambda_c, log10_err] : groups) {
+    Series s = series(family, 2, 0.05, 1.0, 0.05);
+    s.theta_left = s.theta_right = theta;
+    fits.series.push_back(s);
+    Crossover g = angle_group(family, fits.series.back());
+    CrossoverFit f;
+    f.lambda_c = lambda_c, f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = log10_err;
+    f.lambda_c_err = lambda_c * std::log(10.0) * log10_err;
+    g.fit = f;
+    fits.crossovers.push_back(g);
+  }
+}
+
 const ClaimCheck* find(const std::vector<ClaimCheck>& checks, const std::string& claim_part, const std::string& subject) {
   for (const ClaimCheck& c : checks)
     if (c.claim.find(claim_part) != std::string::npos && c.subject == subject) return &c;
@@ -226,21 +253,7 @@ TEST(PaperClaims, LambdaCsFallWithTheAngleIsADirectionJudgedBeyondTwoSigma) {
   const std::vector<std::tuple<std::string, double, double, double>> groups = {
       {"A", 90, 0.09, 0.05}, {"A", 60, 0.037, 0.08}, {"A", 30, 0.08, 0.10}, {"B", 90, 0.01, 0.05}, {"B", 60, 0.05, 0.05},
       {"C", 60, 0.01, 0.05}};
-  fits.series.reserve(groups.size());
-  for (const auto& [family, theta, lambda_c, log10_err] : groups) {
-    Series s = series(family, 2, 0.05, 1.0, 0.05);
-    s.theta_left = s.theta_right = theta;
-    fits.series.push_back(s);
-    Crossover g;
-    g.label = family;
-    g.angle_family = family;
-    g.finite = {&fits.series.back()};
-    CrossoverFit f;
-    f.lambda_c = lambda_c, f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = log10_err;
-    f.lambda_c_err = lambda_c * std::log(10.0) * log10_err;
-    g.fit = f;
-    fits.crossovers.push_back(g);
-  }
+  add_angle_groups(fits, groups);
   const auto checks = check_paper_claims(fits);
   const std::string claim = "lambda_c falls as theta_w falls (Fig. 6), the paper's sigmoid";
   const ClaimCheck* a60 = find(checks, claim, "A at theta_w = 60");
@@ -268,21 +281,7 @@ TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees)
   const std::vector<std::tuple<std::string, double, double, double>> groups = {
       {"A", 90, 0.05, 0.05}, {"A", 30, 0.006, 0.05}, {"A", 20, 0.0055, 0.05}, {"B", 90, 0.04, 0.02},
       {"B", 30, 0.021, 0.02}, {"B", 20, 0.01, 0.02}, {"C", 90, 0.05, 0.05}, {"C", 20, 0.006, 0.05}};
-  fits.series.reserve(groups.size());
-  for (const auto& [family, theta, lambda_c, log10_err] : groups) {
-    Series s = series(family, 2, 0.05, 1.0, 0.05);
-    s.theta_left = s.theta_right = theta;
-    fits.series.push_back(s);
-    Crossover g;
-    g.label = family;
-    g.angle_family = family;
-    g.finite = {&fits.series.back()};
-    CrossoverFit f;
-    f.lambda_c = lambda_c, f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = log10_err;
-    f.lambda_c_err = lambda_c * std::log(10.0) * log10_err;
-    g.fit = f;
-    fits.crossovers.push_back(g);
-  }
+  add_angle_groups(fits, groups);
   const auto checks = check_paper_claims(fits);
   const std::string claim = "lambda_c stops falling below theta_w = 30 deg";
   const ClaimCheck* a = find(checks, claim, "A at theta_w = 20");
@@ -425,10 +424,7 @@ TEST(PaperClaims, Fig6aAtOneLambdaBetaFallsWithTheAngleAndLiesOnThePapersSideOfT
     Series s = series(family + " series", 2, 1e-2, beta, 0.05, 1, 0.05, k);
     s.theta_left = s.theta_right = theta;
     fits.series.push_back(s);
-    Crossover g;
-    g.label = family;
-    g.angle_family = family;
-    g.finite = {&fits.series.back()};
+    Crossover g = angle_group(family, fits.series.back());
     if (family == "F" || (family == "H" && theta == 90) || (family == "I" && theta == 30)) {
       CrossoverFit f;
       f.lambda_c = 0.05, f.log10_lambda_c = std::log10(0.05), f.log10_lambda_c_err = 0.1, f.lambda_c_err = 0.01;

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <vector>
 
 #include "core/text_escape.h"
 #include "figure.h"
 #include "reports/fit.h"
+#include "reports/number_format.h"
 
 namespace beverloo::figures {
 
@@ -18,18 +18,19 @@ namespace beverloo::figures {
 // half-height) does not widen it: one such series (the DP campaign's beta = 6.2 +- 6.5 at 20
 // deg, lambda = 1e-3) flattened every sigmoid into a line. It is left beyond the frame and
 // counted.
+constexpr double kFrameBetaErr = 0.5, kFrameMargin = 0.2;
+
 std::optional<BetaFrame> beta_vs_lambda_frame(const CampaignFits& fits) {
-  constexpr double kFrameBetaErr = 0.5, kFrameMargin = 0.2;
   double lo = INFINITY, hi = -INFINITY;
+  auto widen = [&](const Series* s) {
+    if (s && s->fit && s->fit->beta_err <= kFrameBetaErr)
+      lo = std::min(lo, s->fit->beta - s->fit->beta_err), hi = std::max(hi, s->fit->beta + s->fit->beta_err);
+  };
   for (const Crossover& g : fits.crossovers) {
     if (g.finite.empty()) continue;
     lo = std::min(lo, g.dimension - 1.5), hi = std::max(hi, g.dimension - 0.5);
-    std::vector<const Series*> drawn(g.finite.begin(), g.finite.end());
-    for (const Series* lim : {g.limit0, g.limit_inf})
-      if (lim) drawn.push_back(lim);
-    for (const Series* s : drawn)
-      if (s->fit && s->fit->beta_err <= kFrameBetaErr)
-        lo = std::min(lo, s->fit->beta - s->fit->beta_err), hi = std::max(hi, s->fit->beta + s->fit->beta_err);
+    for (const Series* s : g.finite) widen(s);
+    widen(g.limit0), widen(g.limit_inf);
   }
   if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
   BetaFrame frame{lo - kFrameMargin, hi + kFrameMargin, 0};
@@ -49,7 +50,7 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
     if (frame->beyond > 0)
       f.extra += "set label " +
                  gnuplot_string(std::to_string(frame->beyond) + (frame->beyond == 1 ? " exponent" : " exponents") +
-                                " with an error above 0.5 beyond the frame (beverloo_fits.md)") +
+                                " with an error above " + format_value(kFrameBetaErr, 2) + " beyond the frame (beverloo_fits.md)") +
                  " at graph 0.02, graph 0.04 font ',9' noenhanced\n";
   }
   int k = 0;

@@ -175,7 +175,7 @@ int status_command(const std::string& dir) {
   std::printf("failures     %s\n", classes.empty() ? "none" : terminal_safe(classes).c_str());
   // the unit to plan the rest of a campaign with (docs/cli.md)
   bool first_speed = true;
-  for (const ModelSpeed& m : campaign_speed(db, id)) {
+  for (const ModelSpeed& m : campaign_speed(db, CampaignScope::one(id))) {
     std::printf("%s %s: %.3g t0 per CPU-minute per job (median of %d; %.3g-%.3g)\n", first_speed ? "speed       " : "            ",
                 m.model.c_str(), m.median, m.jobs, m.min, m.max);
     first_speed = false;

@@ -13,5 +13,5 @@ void add_report_commands(CLI::App& app, int& exit_status);
 void add_params_command(CLI::App& app, int& exit_status);
 void add_experiment_command(CLI::App& app, int& exit_status);
 /// `beverloo report` for a campaign directory; also the last step of `beverloo run`.
-int report_campaign(const std::string& dir, const std::string& out);
+int report_campaign(const std::string& dir, const std::string& out, const std::string& campaign = "latest");
 }  // namespace beverloo

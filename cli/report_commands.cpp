@@ -29,9 +29,10 @@ std::string make_scratch_dir(const std::string& prefix) {
 }
 }  // namespace
 
-int report_campaign(const std::string& dir, const std::string& out) {
+int report_campaign(const std::string& dir, const std::string& out, const std::string& campaign) {
   return guarded("report", [&] {
-    const auto figures = write_report(dir, out);
+    const CampaignScope scope = CampaignScope::parse(campaign, "--campaign");
+    const auto figures = write_report(dir, out, scope);
     int made = 0;
     for (const auto& f : figures) made += f.made;
     std::printf("report: %s/index.html (%d of %zu figures; tables beverloo_fits and crossover_fits)\n", terminal_safe(out).c_str(), made,
@@ -99,8 +100,13 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   fit->add_option("--flow-rate", *flow_rate,
                   "Q (default) | Q_prime: fit Appendix B's Q' = Q a_eff / a_avg instead (printed, not stored)")
       ->check(CLI::IsMember({"Q", "Q_prime"}));
-  fit->callback([dir, authors_way, next, k_err, beta_err, w_range, w_step, flow_rate, &exit_status] {
+  auto fit_campaigns = std::make_shared<std::string>("latest");
+  fit->add_option("--campaign", *fit_campaigns,
+                  "latest (default) | all | ID: which campaigns of DIR to fit (a directory holds one per sweep run "
+                  "in it; all: every job of every campaign, each once)");
+  fit->callback([dir, authors_way, next, k_err, beta_err, w_range, w_step, flow_rate, fit_campaigns, &exit_status] {
     exit_status = guarded("fit", [&] {
+      const CampaignScope scope = CampaignScope::parse(*fit_campaigns, "--campaign");
       // While a coordinator runs the campaign (one writer at a time), the results stored so far
       // are fitted read-only: printed, not stored, the campaign's files untouched. A week-long
       // campaign's user wants its fits before its end.
@@ -114,12 +120,14 @@ void add_report_commands(CLI::App& app, int& exit_status) {
                     "(printed, not stored; `beverloo fit` after it stops stores them)\n\n");
       }
       db::Database& db = writer ? writer->db() : reader->db();
+      scope.check_exists(db, "--campaign");
+      if (*fit_campaigns != "latest") std::printf("fit: %s of %s\n\n", scope.describe(db).c_str(), terminal_safe(*dir).c_str());
       // Q' (Appendix B): fitted and printed, never stored: the stored fits and the report are Q's
       const bool q_prime = *flow_rate == "Q_prime";
       if (q_prime)
         std::printf("fit: the flow rate Q' = Q a_eff / a_avg (Appendix B; a_eff = 1/rho_n near the orifice), printed, "
                     "not stored\n\n");
-      const CampaignFits fits = fit_campaign(db, q_prime ? FlowRate::QPrime : FlowRate::Q);
+      const CampaignFits fits = fit_campaign(db, q_prime ? FlowRate::QPrime : FlowRate::Q, scope);
       if (fits.series.empty()) {
         std::printf("fit: nothing to fit in %s: no job has a stored result and no series was imported "
                     "(`beverloo campaign status --dir %s` shows where the jobs are)\n",
@@ -177,8 +185,12 @@ void add_report_commands(CLI::App& app, int& exit_status) {
   CLI::App* report = app.add_subcommand("report", "Fits, tables and gnuplot figures (SVG, PNG) with index.html");
   report->add_option("DIR", *rdir, "campaign directory")->required();
   report->add_option("-o,--output", *out, "output directory (default: DIR/report)");
-  report->callback([rdir, out, &exit_status] {
-    exit_status = report_campaign(*rdir, out->empty() ? campaign_dir::report_path(*rdir) : *out);
+  auto report_campaigns = std::make_shared<std::string>("latest");
+  report->add_option("--campaign", *report_campaigns,
+                     "latest (default) | all | ID: which campaigns of DIR the report covers (all: every job of every "
+                     "campaign, each once)");
+  report->callback([rdir, out, report_campaigns, &exit_status] {
+    exit_status = report_campaign(*rdir, out->empty() ? campaign_dir::report_path(*rdir) : *out, *report_campaigns);
   });
 }
 

@@ -315,7 +315,7 @@ std::vector<PlanDecision> AdaptivePlanner::plan(db::Database& db, std::int64_t c
     std::vector<std::size_t> run_index;  // per costs->runs: its index in the series' runs
     const Series* read_series = nullptr;  // the series as read (its runs and job keys in parallel)
     if (spec->extend) {
-      if (!campaign_runs) campaign_runs = read_campaign_runs(db, campaign);
+      if (!campaign_runs) campaign_runs = read_campaign_runs(db, CampaignScope::one(campaign));
       for (const Series& c : campaign_runs->series)
         if (c.key == key) read_series = &c;
       if (read_series) costs = flow_time_costs(campaign_runs->runs[key], run_index);

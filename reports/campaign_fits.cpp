@@ -81,8 +81,8 @@ namespace {
 /// The series of a campaign fitted, the imported experiments appended if asked, and then the
 /// beta(lambda) groups: last, because a group points into `series` (appending after it could
 /// move the vector and leave the pointers dangling). Experiments never join a group.
-CampaignFits fitted(db::Database& db, std::int64_t campaign, FlowRate rate, bool with_experiments) {
-  CampaignRuns runs = read_campaign_runs(db, campaign, rate);
+CampaignFits fitted(db::Database& db, const CampaignScope& scope, FlowRate rate, bool with_experiments) {
+  CampaignRuns runs = read_campaign_runs(db, scope, rate);
   CampaignFits out;
   out.series = std::move(runs.series);
   for (Series& s : out.series) fit_series(s, runs.runs[s.key]);
@@ -92,12 +92,12 @@ CampaignFits fitted(db::Database& db, std::int64_t campaign, FlowRate rate, bool
 }
 }  // namespace
 
-CampaignFits fit_campaign(db::Database& db, FlowRate rate) {
-  return fitted(db, -1, rate, rate == FlowRate::Q);  // the experiments have no Q'
+CampaignFits fit_campaign(db::Database& db, FlowRate rate, const CampaignScope& scope) {
+  return fitted(db, scope, rate, rate == FlowRate::Q);  // the experiments have no Q'
 }
 
 CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign, FlowRate rate) {
-  return fitted(db, campaign, rate, false);
+  return fitted(db, campaign < 0 ? CampaignScope::latest() : CampaignScope::one(campaign), rate, false);
 }
 
 /// "beta", "k,beta", ...: the parameters of a bounded fit that ended on a bound ("" for none).

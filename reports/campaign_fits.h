@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "orchestrator/campaign/campaign_scope.h"
 #include "orchestrator/db/database.h"
 #include "reports/fit.h"
 #include "reports/survival.h"
@@ -193,9 +194,9 @@ struct CampaignFits {
 /// (the area that left counted with the packing's own particle area near the orifice, a_eff =
 /// 1/rho_n), with its error.
 enum class FlowRate { Q, QPrime };
-/// Reads the latest campaign of the database and its experiment series (Q only), and fits them.
-/// Never throws for unfittable data.
-CampaignFits fit_campaign(db::Database& db, FlowRate rate = FlowRate::Q);
+/// Reads the campaigns of `scope` (by default the latest) and the experiment series (Q only),
+/// and fits them. Never throws for unfittable data.
+CampaignFits fit_campaign(db::Database& db, FlowRate rate = FlowRate::Q, const CampaignScope& scope = CampaignScope::latest());
 /// One campaign's series (-1: the latest) with their Beverloo fits and its beta(lambda) groups,
 /// no experiments: what the adaptive planner decides from.
 CampaignFits fit_campaign_with_crossovers(db::Database& db, std::int64_t campaign, FlowRate rate = FlowRate::Q);

@@ -50,7 +50,7 @@ void drop_continued_runs(Series& s, std::vector<RunRecord>& runs) {
 
 std::string series_key_of(const nlohmann::json& job) { return sha256_hex(series_job_of(job).dump()); }
 
-CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRate rate) {
+CampaignRuns read_campaign_runs(db::Database& db, const CampaignScope& scope, FlowRate rate) {
   CampaignRuns out;
   // a clogged run's Q' is as missing as its Q (0): coalesce keeps the row
   const std::string columns = rate == FlowRate::QPrime ? "coalesce(r.Q_prime, 0), coalesce(r.Q_prime_err, 0)" : "r.Q, r.Q_err";
@@ -59,12 +59,7 @@ CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign, FlowRat
       // summary_json: force_ratio_err is a generated column only once a binary that knows it
       // has opened the store (the report may read a campaign older than the field)
       "json_extract(r.summary_json, '$.force_ratio_err') FROM jobs j "
-      "JOIN campaign_jobs c ON c.job_key = j.key JOIN results r ON r.job_key = j.key "
-      "WHERE c.campaign_id = coalesce(?1, (SELECT max(id) FROM campaigns)) ORDER BY c.point_index");
-  if (campaign >= 0)
-    st.bind(1, campaign);
-  else
-    st.bind_null(1);
+      "JOIN (" + scope.jobs_in_scope_sql() + ") c ON c.job_key = j.key JOIN results r ON r.job_key = j.key ORDER BY c.ord");
   std::map<std::string, std::size_t> index;
   std::vector<json> series_jobs;  // per series, for labels that tell them apart
   while (st.step()) {

@@ -35,8 +35,8 @@ struct CampaignRuns {
   std::map<std::string, nlohmann::json> base_job_of;   ///< series key -> its job without the dissipation parameters
 };
 
-/// The jobs with a result of a campaign (campaign < 0: the latest), their points of `rate`.
-CampaignRuns read_campaign_runs(db::Database& db, std::int64_t campaign = -1, FlowRate rate = FlowRate::Q);
+/// The jobs with a result in the campaigns of `scope` (each job once), their points of `rate`.
+CampaignRuns read_campaign_runs(db::Database& db, const CampaignScope& scope = CampaignScope::latest(), FlowRate rate = FlowRate::Q);
 /// A job's series key: sha256 of its canonical JSON without w, the replica, the seed and
 /// run.min_time.
 std::string series_key_of(const nlohmann::json& job);

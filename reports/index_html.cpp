@@ -16,25 +16,28 @@ namespace {
 
 std::string pm(double v, double e) { return format_with_error(v, e, " &plusmn; "); }
 
-void run_summary(std::ostringstream& html, db::Database& db) {
-  db::Statement c = db.prepare("SELECT name, created_at FROM campaigns ORDER BY id DESC LIMIT 1");
+void run_summary(std::ostringstream& html, db::Database& db, const CampaignScope& scope) {
+  db::Statement c = db.prepare(scope.latest_in_scope_sql());
   const bool have = c.step();
-  html << "<h1>beverloo report: " << html_escape(have ? c.get_text(0) : std::string("(no campaign)")) << "</h1>\n";
+  html << "<h1>beverloo report: " << html_escape(have ? c.get_text(1) : std::string("(no campaign)")) << "</h1>\n";
+  if (scope.is_all())
+    html << "<p>The jobs of " << html_escape(scope.describe(db)) << " in this directory, each once (`beverloo report "
+            "--campaign all`); the heading names the latest.</p>\n";
   html << "<p class=units>Units: lengths in sigma_avg (the mean particle diameter), times in "
           "t0 = (sigma_avg / g)<sup>1/2</sup>, velocities in sigma_avg / t0, flow rates Q in "
           "Q_0 = sigma_avg<sup>d</sup> / t0 (area per time in 2D, volume per time in 3D). "
           "lambda = zeta / mu is dimensionless.</p>\n";
   html << "<h2>Run summary</h2>\n<table><tr><th>jobs by state</th><th>count</th><th>meaning</th></tr>\n";
   db::Statement s = db.prepare(
-      "SELECT j.state, count(*) FROM jobs j JOIN campaign_jobs cj ON cj.job_key = j.key "
-      "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) GROUP BY j.state ORDER BY j.state");
+      "SELECT j.state, count(*) FROM jobs j JOIN (" + scope.jobs_in_scope_sql() + ") cj ON cj.job_key = j.key "
+      "GROUP BY j.state ORDER BY j.state");
   while (s.step())
     html << "<tr><td>" << s.get_text(0) << "</td><td>" << s.get_int(1) << "</td><td>" << job_state_meaning(s.get_text(0))
          << "</td></tr>\n";
   html << "</table>\n<table><tr><th>how finished runs ended</th><th>count</th><th>meaning</th></tr>\n";
   db::Statement st = db.prepare(
-      "SELECT r.status, count(*) FROM results r JOIN campaign_jobs cj ON cj.job_key = r.job_key "
-      "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) GROUP BY 1 ORDER BY 1");
+      "SELECT r.status, count(*) FROM results r JOIN (" + scope.jobs_in_scope_sql() + ") cj ON cj.job_key = r.job_key "
+      "GROUP BY 1 ORDER BY 1");
   while (st.step()) {
     const std::string status = st.get_text(0);
     const char* meaning = run_status_meaning(status);
@@ -42,8 +45,8 @@ void run_summary(std::ostringstream& html, db::Database& db) {
   }
   html << "</table>\n<table><tr><th>failed attempts by class</th><th>count</th></tr>\n";
   db::Statement fcl = db.prepare(
-      "SELECT a.failure_class, count(*) FROM attempts a JOIN campaign_jobs cj ON cj.job_key = a.job_key "
-      "WHERE cj.campaign_id = (SELECT max(id) FROM campaigns) AND a.failure_class IS NOT NULL GROUP BY 1");
+      "SELECT a.failure_class, count(*) FROM attempts a JOIN (" + scope.jobs_in_scope_sql() + ") cj ON cj.job_key = a.job_key "
+      "WHERE a.failure_class IS NOT NULL GROUP BY 1");
   bool any = false;
   while (fcl.step()) {
     any = true;
@@ -51,12 +54,12 @@ void run_summary(std::ostringstream& html, db::Database& db) {
   }
   if (!any) html << "<tr><td>none</td><td>0</td></tr>\n";
   db::Statement t = db.prepare(
-      "SELECT coalesce(sum(r.wall_seconds), 0), coalesce(sum(r.steps), 0) FROM results r JOIN campaign_jobs cj ON "
-      "cj.job_key = r.job_key WHERE cj.campaign_id = (SELECT max(id) FROM campaigns)");
+      "SELECT coalesce(sum(r.wall_seconds), 0), coalesce(sum(r.steps), 0) FROM results r JOIN (" + scope.jobs_in_scope_sql() +
+      ") cj ON cj.job_key = r.job_key");
   t.step();
   html << "</table>\n<p>Engine time: " << format_value(std::round(t.get_double(0)), 6) << " s over " << t.get_int(1)
        << " time steps.</p>\n";
-  const std::vector<ModelSpeed> speed = campaign_speed(db, db.scalar_int("SELECT coalesce(max(id), -1) FROM campaigns"));
+  const std::vector<ModelSpeed> speed = campaign_speed(db, scope);
   if (!speed.empty()) {
     html << "<table><tr><th>model</th><th>jobs</th><th>t0 of flow per CPU-minute of a job: median</th><th>range</th></tr>\n";
     for (const ModelSpeed& m : speed)
@@ -204,12 +207,12 @@ void clog_table(std::ostringstream& html, const CampaignFits& fits) {
 }
 
 /// An adaptive campaign's decisions (reports/adaptive_planner.h), in the order they were taken.
-void adaptive_table(std::ostringstream& html, db::Database& db, const CampaignFits& fits) {
+void adaptive_table(std::ostringstream& html, db::Database& db, const CampaignFits& fits, const CampaignScope& scope) {
   db::Statement has = db.prepare("SELECT count(*) FROM sqlite_master WHERE name = 'adaptive_decisions'");
   if (!has.step() || has.get_int(0) == 0) return;
   db::Statement st = db.prepare(
       "SELECT series_key, seq, action, w, replica, reason FROM adaptive_decisions "
-      "WHERE campaign_id = (SELECT max(id) FROM campaigns) ORDER BY rowid");
+      "WHERE " + scope.condition_on("campaign_id") + " ORDER BY rowid");
   bool any = false;
   while (st.step()) {
     if (!any)
@@ -231,7 +234,8 @@ void adaptive_table(std::ostringstream& html, db::Database& db, const CampaignFi
 
 }  // namespace
 
-std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures) {
+std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures,
+                       const CampaignScope& scope) {
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<link rel=\"icon\" href=\"data:,\">\n<title>beverloo report</title>\n"
@@ -239,12 +243,12 @@ std::string index_html(db::Database& db, const CampaignFits& fits, const std::ve
        << "table{border-collapse:collapse;display:block;overflow-x:auto}"
        << "td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}td:first-child{text-align:left}"
        << "td.flag{color:#a00}img{max-width:100%;height:auto}</style></head><body>\n";
-  run_summary(html, db);
+  run_summary(html, db, scope);
   fit_tables(html, fits);
   both_ways_table(html, fits);
   claims_table(html, fits);
   clog_table(html, fits);
-  adaptive_table(html, db, fits);
+  adaptive_table(html, db, fits, scope);
   html << "<h2>Figures</h2>\n";
   for (const ReportFigure& f : figures) {
     html << "<h3>" << html_escape(f.title) << "</h3>\n";

@@ -11,6 +11,7 @@
 
 namespace beverloo {
 
-std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures);
+std::string index_html(db::Database& db, const CampaignFits& fits, const std::vector<ReportFigure>& figures,
+                       const CampaignScope& scope = CampaignScope::latest());
 
 }  // namespace beverloo

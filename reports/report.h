@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "orchestrator/campaign/campaign_scope.h"
+
 namespace beverloo {
 
 struct ReportFigure {
@@ -14,8 +16,11 @@ struct ReportFigure {
   std::string why_not;  ///< when not made: what data it needs
 };
 
-/// Writes the report of the campaign in campaign_dir into out_dir; returns the figures.
-/// Throws on I/O errors; missing data only leaves figures out (with the reason in index.html).
-std::vector<ReportFigure> write_report(const std::string& campaign_dir, const std::string& out_dir);
+/// Writes the report of the campaigns of `scope` (by default the latest) in campaign_dir into
+/// out_dir; returns the figures. Throws on I/O errors and on a scope naming no campaign there
+/// (ConfigError, before anything is written); missing data only leaves figures out (with the
+/// reason in index.html).
+std::vector<ReportFigure> write_report(const std::string& campaign_dir, const std::string& out_dir,
+                                       const CampaignScope& scope = CampaignScope::latest());
 
 }  // namespace beverloo

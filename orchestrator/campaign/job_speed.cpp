@@ -4,12 +4,11 @@
 
 namespace beverloo {
 
-std::vector<ModelSpeed> campaign_speed(db::Database& db, std::int64_t campaign_id) {
+std::vector<ModelSpeed> campaign_speed(db::Database& db, const CampaignScope& scope) {
   db::Statement st = db.prepare(std::string("SELECT j.model || ' ' || j.dimension || 'D', ") + kT0PerCpuMinuteSql +
-                                " FROM results r JOIN campaign_jobs cj ON cj.job_key = r.job_key JOIN jobs j ON "
-                                "j.key = r.job_key WHERE cj.campaign_id = ?1 AND r.wall_seconds > 0 AND "
+                                " FROM results r JOIN (" + scope.jobs_in_scope_sql() + ") cj ON cj.job_key = r.job_key JOIN jobs j ON "
+                                "j.key = r.job_key WHERE r.wall_seconds > 0 AND "
                                 "json_extract(r.summary_json, '$.t_end') > 0 ORDER BY 1, 2");
-  st.bind(1, campaign_id);
   std::map<std::string, std::vector<double>> by_model;  // each list ascending (ORDER BY)
   while (st.step()) by_model[st.get_text(0)].push_back(st.get_double(1));
   std::vector<ModelSpeed> out;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "orchestrator/campaign/campaign_scope.h"
 #include "orchestrator/db/database.h"
 #include "orchestrator/db/typed_columns.h"
 
@@ -20,8 +21,8 @@ struct ModelSpeed {
   double median = 0, min = 0, max = 0;  ///< t0 per CPU-minute over the finished jobs
 };
 
-/// Per model and dimension, over the jobs of campaign campaign_id with a stored result.
-std::vector<ModelSpeed> campaign_speed(db::Database& db, std::int64_t campaign_id);
+/// Per model and dimension, over the jobs of the campaigns in scope (each once) with a stored result.
+std::vector<ModelSpeed> campaign_speed(db::Database& db, const CampaignScope& scope);
 
 /// The SQL of one job's value, over results r (the runs view's column of the same name).
 using db::kT0PerCpuMinuteSql;

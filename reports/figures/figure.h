@@ -21,6 +21,7 @@ struct FigureContext {
   const CampaignFits& fits;
   db::Database& db;
   std::filesystem::path dir;  ///< the report directory
+  CampaignScope scope = CampaignScope::latest();  ///< the campaigns the report covers
 };
 
 using FigureMaker = ReportFigure (*)(const FigureContext&);

@@ -13,7 +13,7 @@ ReportFigure q_prime_vs_w(const FigureContext& c) {
            "w / sigma_avg", "Q' / Q_0");
   std::map<std::string, const Series*> of_q;
   for (const Series& s : c.fits.series) of_q[s.key] = &s;
-  const CampaignFits prime = fit_campaign(c.db, FlowRate::QPrime);
+  const CampaignFits prime = fit_campaign(c.db, FlowRate::QPrime, c.scope);
   std::vector<Series> shown;
   for (const Series& s : prime.series) {
     if (s.rate_is_c0()) continue;

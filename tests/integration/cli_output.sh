@@ -83,6 +83,28 @@ assert abs(lo - v[0]) <= 6e-3 * v[0] and abs(hi - v[1]) <= 6e-3 * v[1], (lo, hi,
 grep -q "t0 of flow per CPU-minute of a job" "$WORK/c/report/index.html" || fail "the report does not show the jobs' speed"
 echo "ok  campaign status explains its states and endings, and the jobs' speed (also in the report)"
 
+# a second sweep in the same directory: fit and report read the latest campaign by default,
+# --campaign all every job of both once, --campaign ID one; a bad or missing ID is refused
+# (exit 2, naming --campaign) with nothing written
+sed 's/"w": \[3, 4\]/"w": [4, 5]/; s/"name": "s"/"name": "s2"/' "$WORK/sweep.json" > "$WORK/sweep2.json"
+"$BIN" run "$WORK/sweep2.json" --dir "$WORK/c" --workers 2 --progress quiet > /dev/null 2>&1 || fail "second campaign failed"
+points() { "$BIN" query "$WORK/c" "SELECT sum(points + clogged_points) FROM beverloo_fits" --format csv | tail -1; }
+"$BIN" fit "$WORK/c" > /dev/null || fail "fit failed"
+[ "$(points)" = 2 ] || fail "fit of the latest campaign stored $(points) points, expected 2 (w = 4, 5)"
+"$BIN" fit "$WORK/c" --campaign all > "$WORK/out" || fail "fit --campaign all failed"
+grep -q "^fit: every campaign (2) of " "$WORK/out" || fail "fit --campaign all does not say what it read: $(head -2 "$WORK/out")"
+[ "$(points)" = 3 ] || fail "fit --campaign all stored $(points) points, expected 3 (w = 4 is in both campaigns, once)"
+"$BIN" fit "$WORK/c" --campaign 1 > /dev/null && [ "$(points)" = 2 ] || fail "fit --campaign 1 stored $(points) points, expected 2"
+for bad in 3 0 x; do
+  rm -rf "$WORK/c/report"
+  set +e; "$BIN" report "$WORK/c" --campaign "$bad" > "$WORK/out" 2> "$WORK/err"; rc=$?; set -e
+  [ "$rc" -eq 2 ] && grep -q "^beverloo report: --campaign" "$WORK/err" || fail "report --campaign $bad gave exit $rc: $(cat "$WORK/err")"
+  [ ! -e "$WORK/c/report" ] || fail "report --campaign $bad wrote the report"
+done
+"$BIN" report "$WORK/c" --campaign all > /dev/null || fail "report --campaign all failed"
+grep -q "every campaign (2)" "$WORK/c/report/index.html" || fail "the report of all campaigns does not say so"
+echo "ok  fit and report read the latest campaign, one by id, or all (each job once); a bad id refused"
+
 # without gnuplot the report is still made: index.html, the tables, each figure's data and
 # script, its images said to need gnuplot; exit 0 with a line on stderr
 rm -rf "$WORK/c/report"

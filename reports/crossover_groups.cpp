@@ -243,6 +243,17 @@ double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpr
                                            : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
 }
 
+double chi2_scale(const CrossoverFit& fit) {
+  // no degrees of freedom left (chi2_red not finite): nothing to scale by
+  return std::isfinite(fit.chi2_red) && fit.chi2_red > 1 ? std::sqrt(fit.chi2_red) : 1.0;
+}
+
+double log10_lambda_c_sigma_chi2_scaled(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
+  CrossoverFit scaled = fit;
+  scaled.log10_lambda_c_err *= chi2_scale(fit);
+  return log10_lambda_c_sigma(scaled, spread);
+}
+
 std::optional<ForceRatioAtLambda> force_ratio_at_paper_lambda(const Crossover& g) {
   // how far (in decades) each of two bracketing series may lie, and the nearest without a bracket
   constexpr double kBracketDecades = 1.0, kNearestDecades = 0.5;

@@ -58,6 +58,23 @@ void judge_no_change(ClaimCheck& c, double z) {
                        : std::string(z > 0 ? "differs (rises" : "differs (falls") + ", z = " + z_text(std::fabs(z)) + ")";
 }
 
+/// Appended to a judged lambda_c verdict where a fit's chi2_red exceeds 1: the z of the same
+/// comparison with each fit's error scaled by sqrt(chi2_red) (chi2_scale), and those factors. The
+/// verdict keeps the page's rule (docs/paper.md); this says how much of it rests on a sigmoid
+/// that does not pass through its points within their errors.
+void append_chi2_scaled_z(ClaimCheck& c, double z_scaled, const std::vector<double>& scales) {
+  if (!c.judged || !std::isfinite(z_scaled)) return;
+  std::string factors;
+  bool scaled = false;
+  for (const double s : scales) {
+    scaled = scaled || s > 1;
+    factors += (factors.empty() ? "" : ", ") + format_value(s, 2);
+  }
+  if (!scaled) return;
+  c.verdict += "; z = " + z_text(std::fabs(z_scaled)) + " with " + (scales.size() > 1 ? "the fits' errors" : "the fit's error") +
+               " scaled by sqrt(chi2_red) (" + factors + ")";
+}
+
 /// The sigma of a series' exponent for a verdict: the larger of the fit error and the spread
 /// over replicas (the fit error alone without replicas).
 double beta_sigma(const Series& s) {
@@ -196,6 +213,9 @@ void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, 
   c.judged = true;
   c.agrees = z <= kClaimAgreeSigmas;
   c.verdict = std::string(c.agrees ? "agrees" : "differs") + " (z = " + z_text(z) + " in log10 lambda_c)";
+  const Crossover::ReplicaSpread& spread = fit.plateaus_free ? g.spread_free : g.spread;
+  append_chi2_scaled_z(c, (fit.log10_lambda_c - std::log10(paper_value)) / log10_lambda_c_sigma_chi2_scaled(fit, spread),
+                       {chi2_scale(fit)});
 }
 
 void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
@@ -310,6 +330,9 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         } else {
           judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
         }
+        const double log_sigma_scaled = std::hypot(log10_lambda_c_sigma_chi2_scaled(*at, spread),
+                                                   log10_lambda_c_sigma_chi2_scaled(*at_ref, spread_ref));
+        append_chi2_scaled_z(c, log_ratio / log_sigma_scaled, {chi2_scale(*at), chi2_scale(*at_ref)});
         out.push_back(c);
       }
     };

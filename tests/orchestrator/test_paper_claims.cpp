@@ -2,6 +2,8 @@
 // checked on which series, the verdict rule, and what is left unjudged.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -299,6 +301,58 @@ TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees)
   EXPECT_EQ(find(checks, claim, "A at theta_w = 30"), nullptr) << "30 deg is the reference, not a subject";
   // the fall from 90 deg is still read for every angle below it
   EXPECT_NE(find(checks, "lambda_c falls as theta_w falls", "C at theta_w = 20"), nullptr);
+}
+
+TEST(PaperClaims, ALambdaCVerdictShowsBesideItTheZWithEachFitsErrorScaledBySqrtChi2Red) {
+  CampaignFits fits;
+  // the five-lambda DP campaign's sigmoids (docs/paper.md, Fig. 6a with DP): lambda_c 0.039 +-
+  // 0.006 at 90 deg (chi2_red 1.0), 0.0213 +- 0.0018 at 30 (8.2), 0.0168 +- 0.0007 at 20 (4.7)
+  const std::vector<std::tuple<std::string, double, double, double>> groups = {
+      {"D", 90, 0.039, 0.006 / 0.039 / std::log(10.0)}, {"D", 30, 0.0213, 0.0018 / 0.0213 / std::log(10.0)},
+      {"D", 20, 0.0168, 0.0007 / 0.0168 / std::log(10.0)}};
+  add_angle_groups(fits, groups);
+  const std::map<double, double> chi2_red = {{90, 1.0}, {30, 8.2}, {20, 4.7}};
+  for (Crossover& g : fits.crossovers) g.fit->chi2_red = chi2_red.at(g.finite.front()->theta_left);
+  const auto checks = check_paper_claims(fits);
+  // 20 against 30 deg: log10(0.0168 / 0.0213) = -0.103 over hypot(0.0181, 0.0367) = 0.0409 (z =
+  // 2.5), and over hypot(0.0181 sqrt 4.7, 0.0367 sqrt 8.2) = 0.112 (z = 0.9)
+  const ClaimCheck* plateau = find(checks, "lambda_c stops falling below theta_w = 30 deg", "D at theta_w = 20");
+  ASSERT_NE(plateau, nullptr);
+  EXPECT_EQ(plateau->verdict, "differs (falls, z = 2.5); z = 0.9 with the fits' errors scaled by sqrt(chi2_red) (2.2, 2.9)");
+  EXPECT_FALSE(plateau->agrees) << "the verdict keeps the page's rule";
+  // 30 against 90 deg: log10(0.0213 / 0.039) = -0.263 over hypot(0.0367, 0.0668) (z = 3.4), and
+  // with 30 deg's error scaled by sqrt 8.2 (90 deg's chi2_red is 1: unscaled) z = 2.1
+  const ClaimCheck* fall = find(checks, "lambda_c falls as theta_w falls", "D at theta_w = 30");
+  ASSERT_NE(fall, nullptr);
+  EXPECT_EQ(fall->verdict, "agrees (falls, z = 3.4); z = 2.1 with the fits' errors scaled by sqrt(chi2_red) (2.9, 1)");
+}
+
+TEST(PaperClaims, LambdaCAgainstThePapersValueShowsTheChi2ScaledZOnlyWhereChi2RedExceedsOne) {
+  for (const double chi2_red : {4.7, 0.8}) {
+    CampaignFits fits;
+    fits.series.reserve(2);
+    for (const double lambda : {1e-3, 0.1}) {
+      Series s = series("E", 2, lambda, 1.0, 0.05);
+      s.theta_left = s.theta_right = 20;
+      fits.series.push_back(s);
+    }
+    Crossover g = angle_group("E", fits.series[0]);
+    g.finite.push_back(&fits.series[1]);
+    CrossoverFit f;
+    f.lambda_c = 0.0168, f.log10_lambda_c = std::log10(0.0168), f.log10_lambda_c_err = 0.0007 / 0.0168 / std::log(10.0);
+    f.lambda_c_err = 0.0007, f.chi2_red = chi2_red;
+    g.fit = f;
+    fits.crossovers.push_back(g);
+    const auto checks = check_paper_claims(fits);
+    const ClaimCheck* c = find(checks, "lambda_c of beta(lambda)", "E");
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(c->paper, "~6e-3 (2D, theta_w = 20)");
+    // log10(0.0168 / 6e-3) = 0.447 over 0.0181 (z = 24.7); over 0.0181 sqrt 4.7 = 0.0392 (z = 11.4)
+    if (chi2_red > 1)
+      EXPECT_EQ(c->verdict, "differs (z = 24.7 in log10 lambda_c); z = 11.4 with the fit's error scaled by sqrt(chi2_red) (2.2)");
+    else
+      EXPECT_EQ(c->verdict, "differs (z = 24.7 in log10 lambda_c)") << "a chi2_red below 1 scales nothing";
+  }
 }
 
 TEST(PaperClaims, Fig6bForceRatioRisesAsTheAngleFallsAndStopsBelowThirtyDegreesWithoutAnyFit) {

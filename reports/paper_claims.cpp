@@ -196,8 +196,10 @@ std::string spread_or_none(const Crossover::ReplicaSpread& spread) {
 /// with its own error): a linear z would call a lambda_c of 15 +- 8 "2 sigma from 0.07". A
 /// midpoint outside the group's measured lambdas is an extrapolation of the sigmoid (with the
 /// paper's fixed plateaus it goes there when the data never cross d - 1, e.g. 3D flows whose
-/// exponents all lie above 2): no verdict.
-void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, double log10_sigma, double paper_value) {
+/// exponents all lie above 2): no verdict. `spread`: the replicas' spread of this fit.
+void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, const Crossover::ReplicaSpread& spread,
+                    double paper_value) {
+  const double log10_sigma = log10_lambda_c_sigma(fit, spread);
   double lo = INFINITY, hi = 0;
   for (const Series* s : g.finite) lo = std::min(lo, s->lambda), hi = std::max(hi, s->lambda);
   if (!(fit.lambda_c >= lo && fit.lambda_c <= hi)) {
@@ -213,7 +215,6 @@ void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, 
   c.judged = true;
   c.agrees = z <= kClaimAgreeSigmas;
   c.verdict = std::string(c.agrees ? "agrees" : "differs") + " (z = " + z_text(z) + " in log10 lambda_c)";
-  const Crossover::ReplicaSpread& spread = fit.plateaus_free ? g.spread_free : g.spread;
   append_chi2_scaled_z(c, (fit.log10_lambda_c - std::log10(paper_value)) / log10_lambda_c_sigma_chi2_scaled(fit, spread),
                        {chi2_scale(fit)});
 }
@@ -235,7 +236,7 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       c.measured_text = format_with_error((*f)->lambda_c, (*f)->lambda_c_err, " +- ") + lambda_c_spread_text(spread);
       const double log10_sigma = log10_lambda_c_sigma(**f, spread);
       c.sigma = (*f)->lambda_c * std::log(10.0) * log10_sigma;  // the verdict's sigma, on the linear scale
-      judge_lambda_c(c, **f, g, log10_sigma, value);
+      judge_lambda_c(c, **f, g, spread, value);
       out.push_back(c);
     }
     if (g.fit && g.fit->b > 0) {

@@ -1,7 +1,7 @@
 #include "orchestrator/campaign/campaign_scope.h"
 
-#include <cerrno>
-#include <cstdlib>
+#include <charconv>
+#include <system_error>
 
 #include "core/errors.h"
 
@@ -10,14 +10,11 @@ namespace beverloo {
 CampaignScope CampaignScope::parse(const std::string& text, const std::string& option) {
   if (text == "latest") return latest();
   if (text == "all") return all();
-  // digits only: strtoll alone would take "+3", " 3" or "3abc"
-  bool digits = !text.empty() && text.size() <= 18;
-  for (const char c : text) digits = digits && c >= '0' && c <= '9';
-  if (digits) {
-    errno = 0;
-    const long long id = std::strtoll(text.c_str(), nullptr, 10);
-    if (errno == 0 && id > 0) return one(id);
-  }
+  // from_chars takes no sign or blank, and must consume the whole text without overflow
+  std::int64_t id = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, id);
+  if (error == std::errc() && stop == end && id > 0) return one(id);
   throw ConfigError(option + " '" + text + "'", "expected 'latest', 'all' or a campaign's id (a positive integer; "
                     "`beverloo query DIR \"SELECT id, name, created_at FROM campaigns\"` lists them)");
 }

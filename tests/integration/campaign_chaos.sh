@@ -36,10 +36,10 @@ rounds=0 coordinator_kills=0 worker_kills=0
 while :; do
   rounds=$((rounds + 1))
   [ "$rounds" -le 40 ] || fail "no completion after 40 rounds"
+  kill_round_begin
   "$BIN" run "$WORK/sweep.json" --dir "$WORK/chaos" --workers 2 --progress quiet 2>> "$WORK/chaos.log" &
   coord=$!
-  delay=$((RANDOM % 1000 + 200))  # ms
-  sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
+  sleep_backed_off $((RANDOM % 1000 + 200))  # ms
   if [ $((RANDOM % 3)) -ne 0 ]; then  # usually kill a worker first, then the coordinator
     pid=$(pgrep -f "worker $WORK/chaos" | head -n 1 || true)
     if [ -n "$pid" ]; then kill -9 "$pid" 2>/dev/null && worker_kills=$((worker_kills + 1)); fi
@@ -48,6 +48,7 @@ while :; do
   if kill -9 "$coord" 2>/dev/null; then coordinator_kills=$((coordinator_kills + 1)); fi
   set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
   if [ "$rc" -eq 0 ]; then break; fi
+  kill_round_end "$WORK/chaos"
   if [ $((RANDOM % 3)) -eq 0 ]; then pkill -9 -f "worker $WORK/chaos" 2>/dev/null || true; fi
 done
 # orphaned workers from killed coordinators may still run: the last coordinator adopted them

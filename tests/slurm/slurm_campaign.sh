@@ -45,15 +45,16 @@ rounds=0 kills=0
 while :; do
   rounds=$((rounds + 1))
   [ "$rounds" -le 40 ] || fail "no completion after 40 rounds"
+  kill_round_begin
   "$BIN" run "$WORK/sweep.json" --dir "$WORK/chaos" --executor slurm --bundle 1 --poll-min 0.3 --poll-max 1 \
       --heartbeat 1 --progress log 2>> "$WORK/chaos.log" &
   coord=$!
-  delay=$((RANDOM % 1500 + 100))  # ms
-  sleep "$((delay / 1000)).$(printf '%03d' $((delay % 1000)))"
+  sleep_backed_off $((RANDOM % 1500 + 100))  # ms
   if kill -9 "$coord" 2>/dev/null; then kills=$((kills + 1)); fi
   set +e; { wait "$coord"; } 2>/dev/null; rc=$?; set -e
   [ "$rc" -eq 0 ] && break
   [ "$rc" -eq 137 ] || { tail "$WORK/chaos.log"; fail "coordinator exit $rc"; }
+  kill_round_end "$WORK/chaos"
 done
 echo "chaos: $rounds rounds, $kills coordinator kills"
 [ "$kills" -ge 2 ] || fail "too few kills to mean anything"

@@ -58,10 +58,11 @@ void judge_no_change(ClaimCheck& c, double z) {
                        : std::string(z > 0 ? "differs (rises" : "differs (falls") + ", z = " + z_text(std::fabs(z)) + ")";
 }
 
-/// Appended to a judged lambda_c verdict where a fit's chi2_red exceeds 1: the z of the same
-/// comparison with each fit's error scaled by sqrt(chi2_red) (chi2_scale), and those factors. The
-/// verdict keeps the page's rule (docs/paper.md); this says how much of it rests on a sigmoid
-/// that does not pass through its points within their errors.
+/// Appended to a judged verdict on lambda_c or an exponent where a fit's chi2_red exceeds 1: the
+/// z of the same comparison with each fit's error scaled by sqrt(chi2_red) (chi2_scale,
+/// beverloo_chi2_scale), and those factors. The verdict keeps the page's rule (docs/paper.md);
+/// this says how much of it rests on a curve that does not pass through its points within
+/// their errors.
 void append_chi2_scaled_z(ClaimCheck& c, double z_scaled, const std::vector<double>& scales) {
   if (!c.judged || !std::isfinite(z_scaled)) return;
   std::string factors;
@@ -81,6 +82,18 @@ double beta_sigma(const Series& s) {
   return std::isnan(s.beta_replica_spread) ? s.fit->beta_err : std::max(s.fit->beta_err, s.beta_replica_spread);
 }
 
+/// sqrt(chi2_red) of a series' Beverloo fit where it exceeds 1, else 1 (as chi2_scale for the
+/// crossover): a weighted fit whose points scatter beyond their errors understates its error.
+double beverloo_chi2_scale(const Series& s) {
+  return std::isfinite(s.fit->chi2_red) && s.fit->chi2_red > 1 ? std::sqrt(s.fit->chi2_red) : 1.0;
+}
+
+/// beta_sigma with the fit's error scaled by beverloo_chi2_scale (the spread over replicas as it is).
+double beta_sigma_chi2_scaled(const Series& s) {
+  const double scaled = s.fit->beta_err * beverloo_chi2_scale(s);
+  return std::isnan(s.beta_replica_spread) ? scaled : std::max(scaled, s.beta_replica_spread);
+}
+
 /// An exponent of a series: its fit's beta with beta_sigma.
 ClaimCheck beta_check(const Series& s, const std::string& claim, const std::string& paper, double paper_value) {
   ClaimCheck c;
@@ -96,8 +109,10 @@ ClaimCheck beta_check(const Series& s, const std::string& claim, const std::stri
   const std::string quality = fit_quality(s);
   if (quality != "ok")
     c.verdict = "not judged: " + quality;
-  else
+  else {
     judge(c, paper_value);
+    append_chi2_scaled_z(c, (s.fit->beta - paper_value) / beta_sigma_chi2_scaled(s), {beverloo_chi2_scale(s)});
+  }
   return c;
 }
 
@@ -149,6 +164,8 @@ void most_different_pair(const CampaignFits& fits, bool friction_only, int dimen
     c.sigma = std::hypot(beta_sigma(*a), beta_sigma(*b));
     c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (difference)";
     judge(c, 0);
+    append_chi2_scaled_z(c, c.measured / std::hypot(beta_sigma_chi2_scaled(*a), beta_sigma_chi2_scaled(*b)),
+                         {beverloo_chi2_scale(*a), beverloo_chi2_scale(*b)});
     out.push_back(c);
   }
 }
@@ -475,6 +492,8 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
               c.verdict = "not judged: no error";
             } else {
               judge_direction(c, -c.measured / c.sigma, "falls", "rises");
+              append_chi2_scaled_z(c, c.measured / std::hypot(beta_sigma_chi2_scaled(*s), beta_sigma_chi2_scaled(*r)),
+                                   {beverloo_chi2_scale(*s), beverloo_chi2_scale(*r)});
             }
             out.push_back(c);
           }
@@ -504,6 +523,8 @@ void one_lambda_theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
           c.agrees = z <= kClaimAgreeSigmas;
           c.verdict = std::string(c.agrees ? "agrees" : c.measured > hi ? "differs (above" : "differs (below") +
                       (c.agrees ? " (z = " : ", z = ") + z_text(z) + " from the interval)";
+          if (z > 0)  // inside the interval there is nothing to scale
+            append_chi2_scaled_z(c, (c.measured - nearest) / beta_sigma_chi2_scaled(*s), {beverloo_chi2_scale(*s)});
         }
         out.push_back(c);
       }

@@ -303,6 +303,31 @@ TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees)
   EXPECT_NE(find(checks, "lambda_c falls as theta_w falls", "C at theta_w = 20"), nullptr);
 }
 
+TEST(PaperClaims, AnExponentVerdictShowsBesideItTheZWithTheFitsErrorScaledBySqrtChi2Red) {
+  CampaignFits fits;
+  fits.series.reserve(4);
+  // 1.71 +- 0.03 against 3/2: z = 7.0; chi2_red 9 triples the error: z = 2.3 (verdict unchanged)
+  fits.series.push_back(series("scatter", 2, 0, 1.71, 0.03));
+  fits.series.back().fit->chi2_red = 9;
+  // the replicas' spread 0.1 exceeds both 0.04 and 0.08: z = 1.9 either way, nothing to add
+  fits.series.push_back(series("spread", 2, INFINITY, 0.69, 0.04));
+  fits.series.back().fit->chi2_red = 4, fits.series.back().beta_replica_spread = 0.1, fits.series.back().replica_fits = 3;
+  // chi2_red below 1 scales nothing
+  fits.series.push_back(series("quiet", 3, 0, 2.9, 0.1));
+  fits.series.back().fit->chi2_red = 0.7;
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* scatter = find(checks, "friction only (lambda = 0): beta", "scatter");
+  ASSERT_NE(scatter, nullptr);
+  EXPECT_EQ(scatter->verdict, "differs (z = 7.0); z = 2.3 with the fit's error scaled by sqrt(chi2_red) (3)");
+  EXPECT_FALSE(scatter->agrees) << "the verdict keeps the page's rule";
+  const ClaimCheck* spread = find(checks, "drag only (lambda = inf): beta", "spread");
+  ASSERT_NE(spread, nullptr);
+  EXPECT_EQ(spread->verdict, "agrees (z = 1.9); z = 1.9 with the fit's error scaled by sqrt(chi2_red) (2)");
+  const ClaimCheck* quiet = find(checks, "friction only (lambda = 0): beta", "quiet");
+  ASSERT_NE(quiet, nullptr);
+  EXPECT_EQ(quiet->verdict, "differs (z = 4.0)");
+}
+
 TEST(PaperClaims, ALambdaCVerdictShowsBesideItTheZWithEachFitsErrorScaledBySqrtChi2Red) {
   CampaignFits fits;
   // the five-lambda DP campaign's sigmoids (docs/paper.md, Fig. 6a with DP): lambda_c 0.039 +-

@@ -135,6 +135,12 @@ void store_authors_fit(db::Statement& au, const Series& s) {
     if (std::isnan(spread)) au.bind_null(col); else au.bind(col, spread);
     ++col;
   }
+  if (s.authors_fit) au.bind(22, s.authors_fit->fit.folded_points); else au.bind_null(22);
+  col = 23;
+  for (const auto* fit : {&s.authors_fixed_lo, &s.authors_fixed_hi}) {
+    if (*fit) au.bind(col, (*fit)->folded_points); else au.bind_null(col);
+    ++col;
+  }
   au.run();
 }
 }  // namespace
@@ -161,7 +167,8 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
       "authors_beta = ?6, authors_beta_err = ?7, authors_points = ?8, authors_at_bound = ?9, authors_message = ?10, "
       "replica_fits = ?11, beta_replica_spread = ?12, authors_k_at_beta_lo = ?13, authors_k_at_beta_lo_err = ?14, "
       "authors_C_at_beta_lo = ?15, authors_k_at_beta_hi = ?16, authors_k_at_beta_hi_err = ?17, authors_C_at_beta_hi = ?18, "
-      "k_replica_spread = ?19, authors_k_at_beta_lo_replica_spread = ?20, authors_k_at_beta_hi_replica_spread = ?21 "
+      "k_replica_spread = ?19, authors_k_at_beta_lo_replica_spread = ?20, authors_k_at_beta_hi_replica_spread = ?21, "
+      "authors_folded_points = ?22, authors_k_at_beta_lo_folded_points = ?23, authors_k_at_beta_hi_folded_points = ?24 "
       "WHERE series_key = ?1");
   for (const Series& s : fits.series) {
     int flowing = 0;
@@ -306,7 +313,8 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   bcsv << "label,lambda,beta,beta_err,replica_fits,beta_replica_spread,k,k_err,C,C_err,authors_points,authors_beta,authors_beta_err,authors_k,authors_k_err,"
           "authors_C,authors_C_err,authors_at_bound,authors_message,authors_k_at_beta_lo,authors_k_at_beta_lo_err,"
           "authors_k_at_beta_hi,authors_k_at_beta_hi_err,k_replica_spread,authors_k_at_beta_lo_replica_spread,"
-          "authors_k_at_beta_hi_replica_spread\n";
+          "authors_k_at_beta_hi_replica_spread,authors_folded_points,authors_k_at_beta_lo_folded_points,"
+          "authors_k_at_beta_hi_folded_points\n";
   bmd << "| series | beta (free) | spread of beta over replicas | beta (authors' way) | k (free) | k (authors' way) | at a "
          "bound | k at beta = d - 3/2; d - 1/2 (authors' way) |\n|---|---|---|---|---|---|---|---|\n";
   for (const Series& s : fits.series) {
@@ -329,11 +337,19 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
       bcsv << ',' << (*fixed ? fmt((*fixed)->k, 8) : "") << ',' << (*fixed ? fmt((*fixed)->k_err, 4) : "");
     for (double spread : {s.k_replica_spread, s.k_at_beta_lo_replica_spread, s.k_at_beta_hi_replica_spread})
       bcsv << ',' << (std::isnan(spread) ? std::string() : fmt(spread, 4));
+    bcsv << ',' << (s.authors_fit ? std::to_string(s.authors_fit->fit.folded_points) : "");
+    for (const auto* fixed : {&s.authors_fixed_lo, &s.authors_fixed_hi})
+      bcsv << ',' << (*fixed ? std::to_string((*fixed)->folded_points) : "");
     bcsv << "\n";
     auto pm = [](double v, double e) { return fmt(v) + " ± " + fmt(e, 2); };
     // a k with its spread over replicas where there is one
     auto pm_spread = [&pm](double v, double e, double spread) {
       return pm(v, e) + (std::isnan(spread) ? std::string() : " (spread " + fmt(spread, 2) + ")");
+    };
+    // a k of the authors' |w - k| fits that lies above some of its widths says so
+    auto folded = [](const BeverlooFit& f) {
+      const std::string note = folded_widths_note(f);
+      return note.empty() ? note : " (" + markdown_cell(note) + ")";
     };
     const std::string spread = std::isnan(s.beta_replica_spread)
                                    ? std::string("-")
@@ -341,12 +357,14 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     bmd << "| " << markdown_cell(s.label) << " | " << (s.fit ? pm(s.fit->beta, s.fit->beta_err) : "no fit") << " | " << spread
         << " | " << (s.authors_fit ? pm(s.authors_fit->fit.beta, s.authors_fit->fit.beta_err) : "no fit") << " | "
         << (s.fit ? pm_spread(s.fit->k, s.fit->k_err, s.k_replica_spread) : "") << " | "
-        << (s.authors_fit ? pm(s.authors_fit->fit.k, s.authors_fit->fit.k_err) : "") << " | "
+        << (s.authors_fit ? pm(s.authors_fit->fit.k, s.authors_fit->fit.k_err) + folded(s.authors_fit->fit) : "") << " | "
         << (s.authors_fit ? bound_names(*s.authors_fit) : markdown_cell(s.authors_message)) << " | "
-        << (s.authors_fixed_lo ? pm_spread(s.authors_fixed_lo->k, s.authors_fixed_lo->k_err, s.k_at_beta_lo_replica_spread)
+        << (s.authors_fixed_lo ? pm_spread(s.authors_fixed_lo->k, s.authors_fixed_lo->k_err, s.k_at_beta_lo_replica_spread) +
+                                     folded(*s.authors_fixed_lo)
                                : "-")
         << "; "
-        << (s.authors_fixed_hi ? pm_spread(s.authors_fixed_hi->k, s.authors_fixed_hi->k_err, s.k_at_beta_hi_replica_spread)
+        << (s.authors_fixed_hi ? pm_spread(s.authors_fixed_hi->k, s.authors_fixed_hi->k_err, s.k_at_beta_hi_replica_spread) +
+                                     folded(*s.authors_fixed_hi)
                                : "-")
         << " |\n";
   }

@@ -1,4 +1,5 @@
 #include "fit.h"
+#include "reports/number_format.h"
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
@@ -91,6 +92,23 @@ double crossover_model(int d, double lambda, double lambda_c, double b) {
   return d - 1 - 0.5 * std::tanh(std::log10(lambda / lambda_c) / b);
 }
 
+namespace {
+/// BeverlooFit's widths: the range used and how many lie below the fitted k.
+void set_widths(BeverlooFit& f, const std::vector<double>& w) {
+  f.points = static_cast<int>(w.size());
+  f.w_min = *std::min_element(w.begin(), w.end());
+  f.w_max = *std::max_element(w.begin(), w.end());
+  f.folded_points = static_cast<int>(std::count_if(w.begin(), w.end(), [&](double x) { return x < f.k; }));
+}
+}  // namespace
+
+std::string folded_widths_note(const BeverlooFit& f) {
+  if (f.folded_points == 0) return "";
+  return "k above " + std::to_string(f.folded_points) + " of its " + std::to_string(f.points) + " widths (" +
+         format_value(f.w_min, 3) + " .. " + format_value(f.w_max, 3) + "): |w - k| folds " +
+         (f.folded_points == 1 ? "it" : "them");
+}
+
 BeverlooFit fit_beverloo(const std::vector<double>& w, const std::vector<double>& Q, const std::vector<double>& Q_err) {
   check_inputs("Beverloo fit", w, Q, Q_err, 4);
   for (double q : Q)
@@ -117,7 +135,6 @@ BeverlooFit fit_beverloo(const std::vector<double>& w, const std::vector<double>
   }
   if (!best.ok) throw FitError("Beverloo fit: the solver did not converge from any start");
   BeverlooFit f;
-  f.points = static_cast<int>(w.size());
   f.C = std::exp(best.x[0]);
   f.k = w_min - std::exp(best.x[1]);
   f.beta = best.x[2];
@@ -126,6 +143,7 @@ BeverlooFit fit_beverloo(const std::vector<double>& w, const std::vector<double>
   f.k_err = std::exp(best.x[1]) * std::sqrt(best.cov[4]);
   f.beta_err = std::sqrt(best.cov[8]);
   f.chi2_red = w.size() > 3 ? best.chi2 / (w.size() - 3) : 0;
+  set_widths(f, w);
   return f;
 }
 
@@ -226,7 +244,6 @@ BeverlooFit fit_beverloo_fixed_beta(const std::vector<double>& w_all, const std:
     }
   if (!best.ok) throw FitError("Beverloo fit with beta fixed: the solver did not converge from any start");
   BeverlooFit f;
-  f.points = static_cast<int>(w.size());
   const double dof = w.size() > 2 ? static_cast<double>(w.size() - 2) : 1.0, s2 = best.chi2 / dof;
   f.k = best.x[0];
   f.k_err = std::sqrt(s2 * best.cov[0]);
@@ -234,6 +251,7 @@ BeverlooFit fit_beverloo_fixed_beta(const std::vector<double>& w_all, const std:
   f.C_err = std::sqrt(s2 * best.cov[3]);
   f.beta = beta;
   f.chi2_red = s2;
+  set_widths(f, w);
   return f;
 }
 
@@ -269,7 +287,6 @@ BoundedBeverlooFit fit_beverloo_bounded(const std::vector<double>& w_all, const 
   if (!best.ok) throw FitError("bounded Beverloo fit: the solver did not converge from any start");
   BoundedBeverlooFit out;
   BeverlooFit& f = out.fit;
-  f.points = static_cast<int>(w.size());
   const double dof = w.size() > 3 ? static_cast<double>(w.size() - 3) : 1.0;
   const double s2 = best.chi2 / dof;  // residual variance: the unweighted fit's error scale
   double value[3], err[3];
@@ -282,6 +299,7 @@ BoundedBeverlooFit fit_beverloo_bounded(const std::vector<double>& w_all, const 
   f.C = value[0], f.C_err = err[0], f.k = value[1], f.k_err = err[1], f.beta = value[2], f.beta_err = err[2];
   f.chi2_red = s2;  // unweighted: the mean squared residual per degree of freedom, in Q's units squared
   out.C_at_bound = at[0], out.k_at_bound = at[1], out.beta_at_bound = at[2];
+  set_widths(f, w);
   return out;
 }
 

@@ -6,6 +6,7 @@
 ///   crossover  beta(lambda) = d - 1 - tanh[(1/b) log10(lambda/lambda_c)] / 2
 /// Weights are 1/sigma^2 from the data's errors, so the covariance (J^T W J)^-1 gives the
 /// parameters' standard errors directly (not rescaled by chi^2; chi^2_red is reported beside).
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,7 +23,15 @@ struct BeverlooFit {
   double C = 0, C_err = 0, k = 0, k_err = 0, beta = 0, beta_err = 0;
   double chi2_red = 0;
   int points = 0;  ///< flowing points used
+  double w_min = NAN, w_max = NAN;  ///< the smallest and largest width used
+  /// Widths used that lie below k: the authors' |C| |w - k|^beta (the bounded and held fits)
+  /// folds them onto the law's mirror image, so such a fit describes no flow there. Always 0 in
+  /// beverloo's free fit, whose k stays below every width.
+  int folded_points = 0;
 };
+
+/// "" when no width is folded; else e.g. "k above 1 of its 7 widths (4 .. 10): |w - k| folds it".
+std::string folded_widths_note(const BeverlooFit& f);
 
 /// w, Q, Q_err of flowing points (Q > 0, Q_err > 0). Needs at least 4 points (3 parameters + 1).
 BeverlooFit fit_beverloo(const std::vector<double>& w, const std::vector<double>& Q, const std::vector<double>& Q_err);

@@ -158,7 +158,8 @@ void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
     for (const auto& [fixed, spread] : {std::pair{&s.authors_fixed_lo, s.k_at_beta_lo_replica_spread},
                                         std::pair{&s.authors_fixed_hi, s.k_at_beta_hi_replica_spread}})
       html << "<td>"
-           << (*fixed ? pm((*fixed)->k, (*fixed)->k_err) + (std::isnan(spread) ? "" : ", spread " + format_value(spread, 2))
+           << (*fixed ? pm((*fixed)->k, (*fixed)->k_err) + (std::isnan(spread) ? "" : ", spread " + format_value(spread, 2)) +
+                            (folded_widths_note(**fixed).empty() ? "" : "; " + html_escape(folded_widths_note(**fixed)))
                       : std::string("-"))
            << "</td>";
     html << "</tr>\n";

@@ -598,6 +598,15 @@ ClaimCheck held_k_check(const Series& s, const HeatmapLimit& limit, const std::s
   c.measured_text = format_with_error(fit.k, fit.k_err, " +- ") + limit.held_text();
   if (!std::isnan(spread))
     c.measured_text += ", spread " + format_value(spread, 2) + " over " + std::to_string(s.replica_fits) + " replicas";
+  // what the held fit rests on: the widths the authors' Q > 0.01 of their unit left it, and
+  // widths that its |w - k| folds (a k above a width where the series flows)
+  int flowing = 0;
+  for (const auto& p : s.points) flowing += p.flowing();
+  if (fit.points > 0 && fit.points < flowing)
+    c.measured_text += "; over w = " + format_value(fit.w_min, 3) + " .. " + format_value(fit.w_max, 3) + " only (" +
+                       std::to_string(fit.points) + " of " + std::to_string(flowing) +
+                       " flowing widths: the authors' fit keeps Q > 3.16)";
+  if (const std::string folded = folded_widths_note(fit); !folded.empty()) c.measured_text += "; " + folded;
   if (below)
     judge_below(c, value);
   else

@@ -693,6 +693,7 @@ Series sp_held(bool friction, double E_sp, double k_held, double k_err, double C
   s.base_key = "sp E_sp=" + std::to_string(E_sp);
   BeverlooFit held;
   held.beta = friction ? 1.5 : 0.5, held.k = k_held, held.k_err = k_err, held.C = C_held, held.C_err = C_err;
+  held.points = 7, held.w_min = 4, held.w_max = 10;  // every width of `series`
   (friction ? s.authors_fixed_hi : s.authors_fixed_lo) = held;
   (friction ? s.k_at_beta_hi_replica_spread : s.k_at_beta_lo_replica_spread) = spread;
   s.replica_fits = std::isnan(spread) ? 1 : 3;
@@ -741,6 +742,24 @@ TEST(PaperClaims, AppendixBHardLimitKOfEachLimitAndTheRatioOfTheirCWithBetaHeld)
   const auto t = appendix_b(check_paper_claims(text));
   ASSERT_EQ(t.size(), 2u);
   for (const ClaimCheck* c : t) EXPECT_EQ(c->claim.find("as a ratio"), std::string::npos);
+}
+
+TEST(PaperClaims, AHeldKSaysWhichWidthsItRestsOnAndWhichItFolds) {
+  // the text set's hard limit (docs/paper.md): friction only, the authors' Q > 3.16 kept w = 8 ..
+  // 10 of the seven; drag only, k = 4.37 above w = 4, which the authors' |w - k| folds
+  CampaignFits fits;
+  fits.series.push_back(sp_held(true, 1e5, 3.17, 0.31, 0.341, 0.02, 0.19));
+  fits.series.back().authors_fixed_hi->points = 3, fits.series.back().authors_fixed_hi->w_min = 8;
+  fits.series.push_back(sp_held(false, 1e5, 4.37, 0.10, 7.56, 0.1));
+  fits.series.back().authors_fixed_lo->folded_points = 1;
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* f = find(checks, "friction only: k ~ 1.6", fits.series[0].label);
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->measured_text, "3.2 +- 0.3 (beta held at 3/2), spread 0.19 over 3 replicas; over w = 8 .. 10 only (3 of 7 "
+                              "flowing widths: the authors' fit keeps Q > 3.16)");
+  const ClaimCheck* d = find(checks, "drag only: k ~ 3.4", fits.series[1].label);
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->measured_text, "4.37 +- 0.10 (beta held at 1/2); k above 1 of its 7 widths (4 .. 10): |w - k| folds it");
 }
 
 /// An SP series of one limit at N with C from the held fit; size_free_key groups one system's

@@ -173,5 +173,31 @@ TEST(BoundedBeverlooFit, BetaFixedRecoversKAndCAndLeavesOutSmallFlows) {
   EXPECT_THROW(fit_beverloo_fixed_beta({3, 4}, {4, 5}, 0.5, BoundedFitOptions::authors()), FitError);
 }
 
+TEST(BoundedBeverlooFit, AHeldKAboveAFittedWidthIsCountedAsFoldingIt) {
+  // Q = 10 |w - 4.5|^(1/2) at w = 4 .. 10 (every Q above the authors' 3.16): the held fit's
+  // |w - k| fits it exactly with k = 4.5, and so folds w = 4 onto the law's mirror image
+  std::vector<double> w, Q, err;
+  for (double x = 4; x <= 10; ++x) {
+    w.push_back(x);
+    Q.push_back(10 * std::sqrt(std::fabs(x - 4.5)));
+    err.push_back(0.01 * Q.back());
+  }
+  const BeverlooFit held = fit_beverloo_fixed_beta(w, Q, 0.5, BoundedFitOptions::authors());
+  EXPECT_NEAR(held.k, 4.5, 1e-4);
+  EXPECT_EQ(held.folded_points, 1);
+  EXPECT_EQ(held.w_min, 4);
+  EXPECT_EQ(held.w_max, 10);
+  EXPECT_EQ(folded_widths_note(held), "k above 1 of its 7 widths (4 .. 10): |w - k| folds it");
+  // beverloo's free fit keeps k below every width: it folds none, and says nothing
+  const BeverlooFit free = fit_beverloo(w, Q, err);
+  EXPECT_LT(free.k, 4.0);
+  EXPECT_EQ(free.folded_points, 0);
+  EXPECT_EQ(folded_widths_note(free), "");
+  // a held fit whose k lies below the widths folds none
+  std::vector<double> plain;
+  for (double x : w) plain.push_back(beverloo_model(x, 3.0, 1.0, 0.5));
+  EXPECT_EQ(fit_beverloo_fixed_beta(w, plain, 0.5, BoundedFitOptions::authors()).folded_points, 0);
+}
+
 }  // namespace
 }  // namespace beverloo

@@ -131,7 +131,13 @@ TEST(PaperClaims, OtherAnglesAndDrainsAreNotCheckedAgainstTheRightAngledHoppersE
   drain.drain = true;
   fits.series.push_back(funnel);
   fits.series.push_back(drain);
-  EXPECT_TRUE(check_paper_claims(fits).empty());
+  // the drain is checked against the experiments' Fig. 8 only (SimulatedDrainsAre...)
+  const auto checks = check_paper_claims(fits);
+  EXPECT_EQ(checks.size(), 2u);
+  for (const ClaimCheck& c : checks) {
+    EXPECT_EQ(c.subject, "drain");
+    EXPECT_EQ(c.claim.rfind("a simulated draining hopper against the experiments (Fig. 8)", 0), 0u) << c.claim;
+  }
 }
 
 TEST(PaperClaims, IndependenceComparesTheTwoSeriesOfALimitThatDifferMost) {
@@ -580,6 +586,35 @@ TEST(PaperClaims, TheExperimentsBetaAndKOnMeasuredSeriesOnly) {
   EXPECT_TRUE(checks[0].agrees);
   EXPECT_EQ(checks[1].claim, "experiments (Fig. 8): k ~ 1.5");
   EXPECT_TRUE(checks[1].agrees);
+}
+
+TEST(PaperClaims, SimulatedDrainsAreCheckedAgainstTheExperimentsBetaAndK) {
+  // the SP drains of sweeps/fig8_draining_sp_replicas.json (docs/experiments.md, three seeds)
+  CampaignFits fits;
+  Series flat = series("SP drain 45/0", 2, INFINITY, 0.520, 0.053, 1, 0.1, 1.53, 0.28);
+  flat.drain = true, flat.theta_left = 45, flat.theta_right = 0;
+  flat.beta_replica_spread = 0.018, flat.k_replica_spread = 0.5, flat.replica_fits = 3;
+  Series funnel = series("SP drain 45/45", 2, INFINITY, 0.745, 0.063, 1, 0.1, 1.25, 0.27);
+  funnel.drain = true, funnel.theta_left = funnel.theta_right = 45;
+  fits.series.push_back(flat);
+  fits.series.push_back(funnel);
+  const auto checks = check_paper_claims(fits);
+  const std::string claim = "a simulated draining hopper against the experiments (Fig. 8): ";
+  const ClaimCheck* b_flat = find(checks, claim + "beta ~ 0.49", "SP drain 45/0");
+  ASSERT_NE(b_flat, nullptr);
+  EXPECT_EQ(b_flat->verdict, "agrees (z = 0.6)");
+  const ClaimCheck* k_flat = find(checks, claim + "k ~ 1.5", "SP drain 45/0");
+  ASSERT_NE(k_flat, nullptr);
+  EXPECT_DOUBLE_EQ(k_flat->sigma, 0.5) << "the replicas' spread of k, larger than the fit error";
+  EXPECT_NE(k_flat->measured_text.find("spread 0.5 over 3 replicas"), std::string::npos) << k_flat->measured_text;
+  const ClaimCheck* b_funnel = find(checks, claim + "beta ~ 0.49", "SP drain 45/45");
+  ASSERT_NE(b_funnel, nullptr);
+  EXPECT_EQ(b_funnel->verdict, "differs (z = 4.0)");
+  // a continuous flow at the same angles is no drain: not checked against the experiments
+  CampaignFits flowing;
+  flowing.series.push_back(flat);
+  flowing.series.back().drain = false;
+  for (const ClaimCheck& c : check_paper_claims(flowing)) EXPECT_EQ(c.claim.find("Fig. 8"), std::string::npos) << c.claim;
 }
 
 /// A smooth DP cell of Fig. 7 in one dissipation limit, with k from the held fit: drag only

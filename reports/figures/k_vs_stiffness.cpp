@@ -1,7 +1,9 @@
 // The offset k versus the paper's softness axes, per dissipation setting: E_sp for SP, K_b
 // for DP (DP groups also keep K_l and E_c fixed). In the two limits also, dashed, k of the fit
 // with beta held at d - 1/2 (lambda = 0) or d - 3/2 (lambda = inf), the way the paper fits
-// (series_fits.cpp): the free fit trades k against beta, the paper's fit puts it all in k.
+// (series_fits.cpp): the free fit trades k against beta, the paper's fit puts it all in k. A
+// held k that lies above one of its fitted widths (the authors' |w - k| folds that width) is
+// ringed: such a k describes the width range more than the orifice (docs/paper.md, Fig. 7a).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -32,6 +34,7 @@ ReportFigure k_versus(const FigureContext& c, bool dp) {
     std::sort(list.begin(), list.end(), [&](const Series* a, const Series* b) { return stiffness(a) < stiffness(b); });
     lines.emplace_back(label, list);
   }
+  std::vector<std::pair<double, double>> folded;  // (stiffness, held k) of fits that fold a width
   int k = 0;
   for (const auto& [label, list] : lines) {
     const std::string style = series_style(k++, static_cast<int>(lines.size()));
@@ -51,10 +54,17 @@ ReportFigure k_versus(const FigureContext& c, bool dp) {
     for (const Series* s : fixed) {
       const BeverlooFit& fit = friction ? *s->authors_fixed_hi : *s->authors_fixed_lo;
       f.data << num(stiffness(s)) << " " << num(fit.k) << " " << num(fit.k_err) << "\n";
+      if (fit.folded_points > 0) folded.emplace_back(stiffness(s), fit.k);
     }
     const std::string beta = friction ? num(list.front()->dimension - 0.5) : num(list.front()->dimension - 1.5);
     f.plots.push_back("DATA index " + std::to_string(held) + " using 1:2:3 with yerrorlines dt 2 " +
                       style.substr(0, style.find(" pt")) + " title " + gnuplot_string(label + ", beta held at " + beta));
+  }
+  if (!folded.empty()) {
+    const int ring = f.begin_block(std::string(dp ? "K_b" : "E_sp") + " k of held fits whose k lies above a fitted width");
+    for (const auto& [x, held_k] : folded) f.data << num(x) << " " << num(held_k) << "\n";
+    f.plots.push_back("DATA index " + std::to_string(ring) +
+                      " using 1:2 with points pt 6 ps 2.5 lc rgb '#000000' title 'held k above a fitted width (|w - k| folds it)'");
   }
   return finish(f, c.dir,
                 dp ? "needs fitted DP series at two or more K_b with the other parameters equal"

@@ -153,6 +153,28 @@ fs::path make_fixture(const double lambda_c, const double b) {
   return dir;
 }
 
+TEST(Report, KVersusStiffnessRingsAHeldKThatFoldsAFittedWidth) {
+  // drag only at two stiffnesses: Q = 10 |w - 4.5|^(1/2) at w = 4 .. 10 (a law through the
+  // mirror at w = 4); the held fit's |w - k| finds k = 4.5 and folds w = 4 at both
+  const json sweep = {{"name", "folded"}, {"base", {{"N", 400}, {"W", 25}, {"lambda", "inf"}}},
+                      {"sweep", {{"product", {{{"E_sp", {100, 1000}}}, {{"w", {4, 5, 6, 7, 8, 9, 10}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& job) {
+    const double Q = 10 * std::sqrt(std::fabs(job["w"].get<double>() - 4.5));
+    return converged_summary(Q, 0.02 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string dat = read(out / "k_vs_Esp.dat");
+  const auto ringed = block_rows(dat, "E_sp k of held fits whose k lies above a fitted width");
+  ASSERT_EQ(ringed.size(), 2u) << dat;
+  EXPECT_EQ(ringed[0], "100 4.5") << dat;
+  EXPECT_EQ(ringed[1], "1000 4.5") << dat;
+  EXPECT_NE(read(out / "k_vs_Esp.gp").find("|w - k| folds it"), std::string::npos);
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
+  EXPECT_EQ(db.scalar_int("SELECT sum(authors_k_at_beta_lo_folded_points) FROM beverloo_fits_both_ways"), 2);
+  fs::remove_all(dir);
+}
+
 TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
   const json sweep = {{"name", "errs"}, {"base", {{"N", 400}, {"W", 25}, {"zeta", 0.3}, {"mu", 0}}},
                       {"sweep", {{"w", {4, 5, 6, 7, 8}}}}};

@@ -1,5 +1,4 @@
 #include "fit.h"
-#include "reports/number_format.h"
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
@@ -10,6 +9,8 @@
 #include <functional>
 #include <limits>
 #include <string>
+
+#include "reports/number_format.h"
 
 namespace beverloo {
 namespace {

@@ -243,10 +243,7 @@ double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpr
                                            : std::max(fit.log10_lambda_c_err, spread.log10_lambda_c);
 }
 
-double chi2_scale(const CrossoverFit& fit) {
-  // no degrees of freedom left (chi2_red not finite): nothing to scale by
-  return std::isfinite(fit.chi2_red) && fit.chi2_red > 1 ? std::sqrt(fit.chi2_red) : 1.0;
-}
+double chi2_scale(const CrossoverFit& fit) { return chi2_error_scale(fit.chi2_red); }
 
 double log10_lambda_c_sigma_chi2_scaled(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
   CrossoverFit scaled = fit;

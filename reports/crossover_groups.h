@@ -26,9 +26,7 @@ std::vector<Crossover> crossover_groups(const std::vector<Series>& series,
 /// and the spread over the replicas' own fits (the fit's error alone without replicas), as an
 /// exponent's sigma is the larger of its error and its spread.
 double log10_lambda_c_sigma(const CrossoverFit& fit, const Crossover::ReplicaSpread& spread);
-/// sqrt(chi2_red) where a crossover fit's reduced chi^2 exceeds 1, else 1: the factor by which
-/// a sigmoid that misses its points by more than their errors understates its own error (the
-/// Particle Data Group's scale factor for averages of inconsistent measurements).
+/// chi2_error_scale (fit.h) of a crossover fit's chi2_red.
 double chi2_scale(const CrossoverFit& fit);
 /// log10_lambda_c_sigma with the fit's error multiplied by chi2_scale. The claims table shows
 /// the z it gives beside each lambda_c verdict; the verdict itself keeps log10_lambda_c_sigma.

@@ -30,6 +30,14 @@ struct BeverlooFit {
   int folded_points = 0;
 };
 
+/// sqrt(chi2_red) where a weighted fit's reduced chi^2 exceeds 1, else 1 (also when chi2_red is
+/// not finite: no degrees of freedom left): the factor by which a curve that misses its points by
+/// more than their errors understates its own errors (the Particle Data Group's scale factor for
+/// averages of inconsistent measurements). Used for Beverloo and crossover fits alike.
+inline double chi2_error_scale(double chi2_red) {
+  return std::isfinite(chi2_red) && chi2_red > 1 ? std::sqrt(chi2_red) : 1.0;
+}
+
 /// "" when no width is folded; else e.g. "k above 1 of its 7 widths (4 .. 10): |w - k| folds it".
 std::string folded_widths_note(const BeverlooFit& f);
 

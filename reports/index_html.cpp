@@ -156,12 +156,15 @@ void both_ways_table(std::ostringstream& html, const CampaignFits& fits) {
     else
       html << "<td colspan=2>" << html_escape(s.authors_message) << "</td>";
     for (const auto& [fixed, spread] : {std::pair{&s.authors_fixed_lo, s.k_at_beta_lo_replica_spread},
-                                        std::pair{&s.authors_fixed_hi, s.k_at_beta_hi_replica_spread}})
-      html << "<td>"
-           << (*fixed ? pm((*fixed)->k, (*fixed)->k_err) + (std::isnan(spread) ? "" : ", spread " + format_value(spread, 2)) +
-                            (folded_widths_note(**fixed).empty() ? "" : "; " + html_escape(folded_widths_note(**fixed)))
-                      : std::string("-"))
-           << "</td>";
+                                        std::pair{&s.authors_fixed_hi, s.k_at_beta_hi_replica_spread}}) {
+      if (!*fixed) {
+        html << "<td>-</td>";
+        continue;
+      }
+      const std::string folded = folded_widths_note(**fixed);
+      html << "<td>" << pm((*fixed)->k, (*fixed)->k_err) << (std::isnan(spread) ? "" : ", spread " + format_value(spread, 2))
+           << (folded.empty() ? "" : "; " + html_escape(folded)) << "</td>";
+    }
     html << "</tr>\n";
   }
   html << "</table>\n<p><a href=\"beverloo_fits_both_ways.csv\">CSV</a> &middot; "

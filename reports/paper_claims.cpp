@@ -82,11 +82,8 @@ double beta_sigma(const Series& s) {
   return std::isnan(s.beta_replica_spread) ? s.fit->beta_err : std::max(s.fit->beta_err, s.beta_replica_spread);
 }
 
-/// sqrt(chi2_red) of a series' Beverloo fit where it exceeds 1, else 1 (as chi2_scale for the
-/// crossover): a weighted fit whose points scatter beyond their errors understates its error.
-double beverloo_chi2_scale(const Series& s) {
-  return std::isfinite(s.fit->chi2_red) && s.fit->chi2_red > 1 ? std::sqrt(s.fit->chi2_red) : 1.0;
-}
+/// chi2_error_scale (fit.h) of a series' Beverloo fit.
+double beverloo_chi2_scale(const Series& s) { return chi2_error_scale(s.fit->chi2_red); }
 
 /// beta_sigma with the fit's error scaled by beverloo_chi2_scale (the spread over replicas as it is).
 double beta_sigma_chi2_scaled(const Series& s) {

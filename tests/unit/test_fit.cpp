@@ -199,5 +199,13 @@ TEST(BoundedBeverlooFit, AHeldKAboveAFittedWidthIsCountedAsFoldingIt) {
   EXPECT_EQ(fit_beverloo_fixed_beta(w, plain, 0.5, BoundedFitOptions::authors()).folded_points, 0);
 }
 
+TEST(Chi2ErrorScale, IsSqrtChi2RedAboveOneAndOneOtherwise) {
+  EXPECT_DOUBLE_EQ(chi2_error_scale(4.0), 2.0);
+  EXPECT_DOUBLE_EQ(chi2_error_scale(0.25), 1.0);  // a fit within its errors is not scaled down
+  EXPECT_DOUBLE_EQ(chi2_error_scale(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(chi2_error_scale(NAN), 1.0);       // no degrees of freedom left
+  EXPECT_DOUBLE_EQ(chi2_error_scale(INFINITY), 1.0);
+}
+
 }  // namespace
 }  // namespace beverloo

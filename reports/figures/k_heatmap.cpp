@@ -2,7 +2,9 @@
 // wall angles); at most four panels (all fits are in the tables). A group in a dissipation
 // limit (friction only or drag only) also gets the panel of k with beta held at d - 1/2 or
 // d - 3/2, the way the paper fits k (series_fits.cpp): with four to seven widths per cell the
-// free fit often cannot tell k from beta, and the paper's Fig. 7 is a map of the held form.
+// free fit often cannot tell k from beta, and the paper's Fig. 7 is a map of the held form. A
+// held k that lies above one of its fitted widths (the authors' |w - k| folds that width onto
+// the law's mirror image) is ringed and its label says so, as k_vs_Esp rings it.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -56,14 +58,23 @@ ReportFigure k_heatmap_Kl_Kb(const FigureContext& c) {
          << "set cblabel 'k / sigma_avg' noenhanced\nset cbrange [" << num(k_lo) << ":" << num(k_hi > k_lo ? k_hi : k_lo + 1) << "]\n"
          << "set multiplot layout " << (panels.size() > 2 ? 2 : 1) << "," << (panels.size() > 2 ? 2 : panels.size()) << "\n";
     for (const Panel& p : panels) {
-      const int block = f.begin_block(p.title + ": K_l K_b k k_err");
-      for (const auto& [s, fit] : p.cells)
-        f.data << num(s->K_l) << " " << num(s->K_b) << " " << num(fit->k) << " " << num(fit->k_err) << "\n";
+      const int block = f.begin_block(p.title + ": K_l K_b k k_err folded_widths");
+      bool any_folded = false;
+      for (const auto& [s, fit] : p.cells) {
+        f.data << num(s->K_l) << " " << num(s->K_b) << " " << num(fit->k) << " " << num(fit->k_err) << " "
+               << fit->folded_points << "\n";
+        any_folded = any_folded || fit->folded_points > 0;
+      }
       // each panel's group is its own title (the figure's title is the page's caption)
       body << "set title " << gnuplot_string(p.title) << " noenhanced font ',9'\n"
            << "plot DATA index " << block << " using 1:2:3 with points pt 5 ps 5 palette notitle, \\\n"
            << "     DATA index " << block
-           << " using 1:2:(sprintf('%.2f+-%.2f', $3, $4)) with labels offset 0,2 font ',8' notitle\n";
+           << " using 1:2:(sprintf('%.2f+-%.2f%s', $3, $4, $5 > 0 ? ' (folds)' : '')) with labels offset 0,2 font ',8' notitle";
+      if (any_folded)
+        body << ", \\\n     DATA index " << block
+             << " using 1:($5 > 0 ? $2 : 1/0) with points pt 6 ps 6 lw 2 lc rgb '#000000' "
+                "title 'held k above a fitted width (|w - k| folds it)'";
+      body << "\n";
     }
     body << "unset multiplot";
     f.body = body.str();

@@ -175,6 +175,40 @@ TEST(Report, KVersusStiffnessRingsAHeldKThatFoldsAFittedWidth) {
   fs::remove_all(dir);
 }
 
+TEST(Report, KHeatmapRingsAHeldKThatFoldsAFittedWidth) {
+  // drag-only DP over a 2 x 2 (K_l, K_b) grid: Q = 10 |w - k|^(1/2) at w = 4 .. 10 with k = 4.5
+  // in the cell (10, 10) (a law through the mirror at w = 4) and k = 2 elsewhere; the held fit
+  // folds w = 4 in that cell only
+  const json sweep = {{"name", "folded_dp"},
+                      {"base", {{"N", 400}, {"W", 25}, {"lambda", "inf"}, {"model", "dp_smooth"}}},
+                      {"sweep", {{"product", {{{"dp.K_l", {1, 10}}}, {{"dp.K_b", {0.1, 10}}}, {{"w", {4, 5, 6, 7, 8, 9, 10}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& job) {
+    const bool folding = job["dp"]["K_l"].get<double>() == 10 && job["dp"]["K_b"].get<double>() == 10;
+    const double Q = 10 * std::sqrt(std::fabs(job["w"].get<double>() - (folding ? 4.5 : 2.0)));
+    return converged_summary(Q, 0.02 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string dat = read(out / "k_heatmap_Kl_Kb.dat");
+  const std::size_t held = dat.find(", beta = 0.5 held: K_l K_b k k_err folded_widths");
+  ASSERT_NE(held, std::string::npos) << dat;
+  // the folding cell: k = 4.5 with w = 4 folded; the others fold nothing
+  EXPECT_NE(dat.find("\n10 10 4.5 ", held), std::string::npos) << dat;
+  const std::size_t cell = dat.find("\n10 10 4.5 ", held);
+  const std::size_t end = dat.find('\n', cell + 1);
+  EXPECT_EQ(dat.substr(end - 2, 2), " 1") << dat.substr(cell, end - cell);
+  for (const char* other : {"\n1 0.1 2 ", "\n10 0.1 2 ", "\n1 10 2 "}) {
+    const std::size_t at = dat.find(other, held);
+    ASSERT_NE(at, std::string::npos) << other << " in\n" << dat;
+    EXPECT_EQ(dat.substr(dat.find('\n', at + 1) - 2, 2), " 0") << other;
+  }
+  const std::string gp = read(out / "k_heatmap_Kl_Kb.gp");
+  EXPECT_NE(gp.find("|w - k| folds it"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("(folds)"), std::string::npos) << gp;
+  EXPECT_NE(read(out / "k_heatmap_Kl_Kb.svg").find("</svg>"), std::string::npos) << "gnuplot drew the ringed map";
+  fs::remove_all(dir);
+}
+
 TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
   const json sweep = {{"name", "errs"}, {"base", {{"N", 400}, {"W", 25}, {"zeta", 0.3}, {"mu", 0}}},
                       {"sweep", {{"w", {4, 5, 6, 7, 8}}}}};
@@ -569,7 +603,7 @@ TEST(Report, EveryFigureIsValidAndReferencedAndFitsRecoverTheFixture) {
   EXPECT_NE(heatmap.find("10 10 2.2"), std::string::npos) << heatmap;
   // the drag-only group also as the paper fits k (beta held at 1/2), in its own block: the
   // fixture's Q is exact, so the held fit finds the same k at every cell
-  const std::size_t held = heatmap.find(", beta = 0.5 held: K_l K_b k k_err");
+  const std::size_t held = heatmap.find(", beta = 0.5 held: K_l K_b k k_err folded_widths");
   ASSERT_NE(held, std::string::npos) << heatmap;
   for (const char* cell : {"\n1 0.1 1 ", "\n10 0.1 1.2 ", "\n1 10 2 ", "\n10 10 2.2 "})
     EXPECT_NE(heatmap.find(cell, held), std::string::npos) << cell << " in the held block of\n" << heatmap;

@@ -181,6 +181,10 @@ struct Crossover {
   struct ReplicaSpread {
     int replicas = 0;  ///< replicas whose own crossover fit succeeded
     double log10_lambda_c = NAN, b = NAN;
+    /// lambdas of the pooled fit that the replicas' own fits leave out: those with fewer than
+    /// two replica fits (e.g. a costly lambda run once), so that the other lambdas still give a
+    /// spread
+    int lambdas_left_out = 0;
   };
   ReplicaSpread spread, spread_free;  ///< of fit (the paper's plateaus) and of fit_free
 };

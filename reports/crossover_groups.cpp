@@ -24,37 +24,49 @@ std::string angle_text(const Series& s) {
 }
 
 /// The crossover's run-to-run spread (Crossover::spread): each replica that has its own free
-/// fit in every finite-lambda series is fitted alone, both ways, over the same lambdas.
+/// fit in every finite-lambda series with two or more replica fits is fitted alone, both ways,
+/// over those lambdas. A lambda with fewer than two replica fits (a costly one run once, or one
+/// whose seeds blew up at different widths) is left out of the replicas' fits and counted,
+/// rather than taking the spread of the whole group with it.
 void replica_spread(Crossover& g, const std::vector<const Series*>& fitted, const std::vector<double>& lambda) {
-  if (fitted.empty()) return;
+  std::vector<const Series*> replicated;
+  std::vector<double> replicated_lambda;
+  for (std::size_t i = 0; i < fitted.size(); ++i)
+    if (fitted[i]->replica_fit.size() >= 2) {
+      replicated.push_back(fitted[i]);
+      replicated_lambda.push_back(lambda[i]);
+    }
+  // the paper's form has three parameters: fewer lambdas than that fix nothing
+  if (replicated.size() < 3) return;
   std::set<int> replicas;
-  for (const auto& [replica, fit] : fitted.front()->replica_fit) replicas.insert(replica);
-  for (const Series* s : fitted)
+  for (const auto& [replica, fit] : replicated.front()->replica_fit) replicas.insert(replica);
+  for (const Series* s : replicated)
     for (auto it = replicas.begin(); it != replicas.end();)
       it = s->replica_fit.count(*it) ? std::next(it) : replicas.erase(it);
   if (replicas.size() < 2) return;
+  const int left_out = static_cast<int>(fitted.size() - replicated.size());
   std::vector<double> log_lc, b, log_lc_free, b_free;
   for (int replica : replicas) {
     std::vector<double> beta, beta_err;
-    for (const Series* s : fitted) {
+    for (const Series* s : replicated) {
       beta.push_back(s->replica_fit.at(replica).beta);
       beta_err.push_back(s->replica_fit.at(replica).beta_err);
     }
     try {
-      const CrossoverFit f = fit_crossover(g.dimension, lambda, beta, beta_err);
+      const CrossoverFit f = fit_crossover(g.dimension, replicated_lambda, beta, beta_err);
       log_lc.push_back(f.log10_lambda_c);
       b.push_back(f.b);
     } catch (const FitError&) {
     }
     try {
-      const CrossoverFit f = fit_crossover_free_plateaus(lambda, beta, beta_err);
+      const CrossoverFit f = fit_crossover_free_plateaus(replicated_lambda, beta, beta_err);
       log_lc_free.push_back(f.log10_lambda_c);
       b_free.push_back(f.b);
     } catch (const FitError&) {
     }
   }
-  g.spread = {static_cast<int>(log_lc.size()), sample_sd(log_lc), sample_sd(b)};
-  g.spread_free = {static_cast<int>(log_lc_free.size()), sample_sd(log_lc_free), sample_sd(b_free)};
+  g.spread = {static_cast<int>(log_lc.size()), sample_sd(log_lc), sample_sd(b), left_out};
+  g.spread_free = {static_cast<int>(log_lc_free.size()), sample_sd(log_lc_free), sample_sd(b_free), left_out};
 }
 
 /// A crossover fit whose covariance is singular (b's or lambda_c's error 0, or not finite) is
@@ -299,7 +311,12 @@ std::optional<ForceRatioAtLambda> force_ratio_at_paper_lambda(const Crossover& g
 std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread) {
   return std::isnan(spread.log10_lambda_c) ? std::string()
                                            : "spread " + format_value(spread.log10_lambda_c, 2) + " in log10 over " +
-                                                 std::to_string(spread.replicas) + " replicas";
+                                                 std::to_string(spread.replicas) + " replicas" +
+                                                 (spread.lambdas_left_out == 0
+                                                      ? std::string()
+                                                      : ", leaving out " + std::to_string(spread.lambdas_left_out) +
+                                                            (spread.lambdas_left_out == 1 ? " lambda" : " lambdas") +
+                                                            " with fewer than two replica fits");
 }
 
 std::optional<double> paper_lambda_c_at_angle(int dimension, double theta_w_deg) {

@@ -107,6 +107,35 @@ TEST(CrossoverSpread, AReplicaMissingFromOneLambdaIsLeftOutAndOneReplicaGivesNon
   EXPECT_EQ(lone_groups.front().spread.replicas, 0);
 }
 
+TEST(CrossoverSpread, ALambdaRunOnceIsLeftOutOfTheReplicasFitsAndCounted) {
+  // lambda = 0.03 with replica 0 only (a costly lambda run once, as the text set's Fig. 4a runs
+  // lambda = 1e-3): the other five lambdas still give each replica its own sigmoid
+  std::vector<Series> series = three_replica_group(-1);
+  for (Series& s : series)
+    if (s.lambda == 0.03) s.replica_fit.erase(1), s.replica_fit.erase(2);
+  const std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  ASSERT_EQ(groups.size(), 1u);
+  const Crossover& g = groups.front();
+  EXPECT_EQ(g.spread.replicas, 3);
+  EXPECT_EQ(g.spread.lambdas_left_out, 1);
+  EXPECT_EQ(g.spread_free.lambdas_left_out, 1);
+  EXPECT_NEAR(g.spread.log10_lambda_c, sample_sd_of_log10({0.03, 0.05, 0.08}), 1e-3);
+  EXPECT_NE(lambda_c_spread_phrase(g.spread).find("over 3 replicas, leaving out 1 lambda with fewer than two replica fits"),
+            std::string::npos)
+      << lambda_c_spread_phrase(g.spread);
+  // with every lambda replicated the phrase says nothing more
+  const std::vector<Series> intact = three_replica_group(-1);
+  const std::vector<Crossover> whole = crossover_groups(intact, base_jobs(intact));
+  EXPECT_EQ(whole.front().spread.lambdas_left_out, 0);
+  EXPECT_EQ(lambda_c_spread_phrase(whole.front().spread).find("leaving out"), std::string::npos);
+  // fewer than three replicated lambdas fix no sigmoid: no spread
+  std::vector<Series> sparse = three_replica_group(-1);
+  for (std::size_t i = 0; i < 4; ++i) sparse[i].replica_fit.erase(1), sparse[i].replica_fit.erase(2);
+  const std::vector<Crossover> none = crossover_groups(sparse, base_jobs(sparse));
+  EXPECT_EQ(none.front().spread.replicas, 0);
+  EXPECT_TRUE(std::isnan(none.front().spread.log10_lambda_c));
+}
+
 TEST(CrossoverFitOfAGroup, AStepSharperThanTheLambdasResolveIsNotDetermined) {
   // three lambdas where the paper's sigmoid matches the one point on the step exactly as b -> 0,
   // with a singular covariance: no lambda_c is reported

@@ -255,6 +255,43 @@ TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
   EXPECT_FALSE(C->agrees);  // (7 - 3) / 0.99 = 4.0
 }
 
+// The paper's fixed plateaus can put 1/b inside (0, 1) for a curve that misses its points (the
+// text set's Fig. 4a: 1/b = 0.21 at chi2_red 29); the free-plateau fit's 1/b is judged beside it.
+TEST(PaperClaims, TheStretchingExponentIsJudgedWithBothSigmoidsEachNamed) {
+  CampaignFits fits;
+  fits.series.push_back(series("low", 2, 0.005, 2.4, 0.05));
+  fits.series.push_back(series("mid", 2, 0.05, 1.0, 0.05));
+  fits.series.push_back(series("high", 2, 1, 0.8, 0.05));
+  Crossover g;
+  g.label = "2D group";
+  g.dimension = 2;
+  g.finite = {&fits.series[0], &fits.series[1], &fits.series[2]};
+  CrossoverFit fixed;
+  fixed.b = 4.8, fixed.b_err = 0.5, fixed.chi2_red = 29.4, fixed.lambda_c = 0.18, fixed.lambda_c_err = 0.05;
+  CrossoverFit free_plateaus;  // 1/b = 2 +- 0.2: 5 sigma above 1; 2.5 with b's error scaled by sqrt(4)
+  free_plateaus.b = 0.5, free_plateaus.b_err = 0.05, free_plateaus.chi2_red = 4, free_plateaus.plateaus_free = true;
+  free_plateaus.lambda_c = 0.01, free_plateaus.lambda_c_err = 0.003;
+  g.fit = fixed;
+  g.fit_free = free_plateaus;
+  fits.crossovers.push_back(g);
+  const auto checks = check_paper_claims(fits);
+  int stretching = 0;
+  for (const ClaimCheck& k : checks) stretching += k.claim.find("stretching exponent") != std::string::npos;
+  EXPECT_EQ(stretching, 2);
+  const ClaimCheck* paper_form = find(checks, "0 < 1/b < 1 (Eq. 2), the paper's sigmoid", "2D group");
+  ASSERT_NE(paper_form, nullptr);
+  EXPECT_NEAR(paper_form->measured, 1 / 4.8, 1e-12);
+  EXPECT_EQ(paper_form->verdict, "agrees (z = 0.0 from the interval)") << "inside (0, 1): no chi2-scaled z";
+  EXPECT_NE(paper_form->measured_text.find("chi2_red 29"), std::string::npos) << paper_form->measured_text;
+  const ClaimCheck* free_form = find(checks, "0 < 1/b < 1 (Eq. 2), the sigmoid with free plateaus", "2D group");
+  ASSERT_NE(free_form, nullptr);
+  EXPECT_NEAR(free_form->measured, 2.0, 1e-12);
+  EXPECT_NEAR(free_form->sigma, 0.05 / 0.25, 1e-12);
+  EXPECT_FALSE(free_form->agrees);
+  EXPECT_EQ(free_form->verdict.rfind("differs (z = 5.0 from the interval); z = 2.5 with the fit's error scaled by sqrt(chi2_red)", 0), 0u)
+      << free_form->verdict;
+}
+
 TEST(PaperClaims, LambdaCsFallWithTheAngleIsADirectionJudgedBeyondTwoSigma) {
   CampaignFits fits;
   // family A at 90, 60, 30 deg; family B at 90 and 60 (its lambda_c rises); C at 60 only

@@ -64,9 +64,9 @@ ReportFigure beta_vs_lambda(const FigureContext& c) {
       std::snprintf(label, sizeof label, "paper (%dD): beta = %.1f, %.1f; lambda_c ~ %.2g", g.dimension, d - 0.5, d - 1.5,
                     lambda_c);
       f.extra += "set arrow from " + num(lambda_c) + ", graph 0 to " + num(lambda_c) +
-                 ", graph 1 nohead dt 3 lc rgb 'gray50'\n";
-      f.plots.push_back(num(d - 0.5) + " with lines dt 3 lc rgb 'gray50' title " + gnuplot_string(label));
-      f.plots.push_back(num(d - 1.5) + " with lines dt 3 lc rgb 'gray50' notitle");
+                 ", graph 1 nohead " + kPaperLineStyle + "\n";
+      f.plots.push_back(num(d - 0.5) + " with lines " + kPaperLineStyle + " title " + gnuplot_string(label));
+      f.plots.push_back(num(d - 1.5) + " with lines " + kPaperLineStyle + " notitle");
     }
     const std::string style = series_style(k++, n);
     if (g.fitted_points() > 0) {  // (no empty block: gnuplot would have nothing to draw)

@@ -34,6 +34,11 @@ std::string num(double v);
 /// own marker; returned as gnuplot "lc rgb '#..' pt N".
 std::string series_style(int k, int n);
 
+/// gnuplot line style of a value the paper states (its plateaus, its lambda_c): thick, long
+/// dashes and grey, so that it stands out from `set grid`'s thin dotted lines even where it lies
+/// on one (beta = 1.5 and 0.5 are grid lines of most beta axes).
+inline constexpr const char* kPaperLineStyle = "lw 2.5 dt (12,6) lc rgb 'gray55'";
+
 struct Figure {
   Figure(std::string n, std::string t, std::string x, std::string y, std::string e = "")
       : name(std::move(n)), title(std::move(t)), xlabel(std::move(x)), ylabel(std::move(y)), extra(std::move(e)) {}

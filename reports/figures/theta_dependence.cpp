@@ -188,7 +188,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
       }
     }
     left << "plot DATA index " << paper << " using 1:2 with points pt 6 ps 2 lc rgb 'gray50' title 'paper: 5e-2 (90), 6e-3 (20)', \\\n"
-         << "     DATA index " << plateau << " using 1:2 with lines dt 3 lc rgb 'gray50' title 'paper: plateau ~5e-3'"
+         << "     DATA index " << plateau << " using 1:2 with lines " << kPaperLineStyle << " title 'paper: plateau ~5e-3'"
          << left_plots.str();
     std::ostringstream body;
     // panel a where a family has lambda_c at two angles, b where it has force ratios (or, beside

@@ -184,6 +184,34 @@ TEST(Report, KVersusStiffnessRingsAHeldKThatFoldsAFittedWidth) {
   fs::remove_all(dir);
 }
 
+// k(E_sp)'s frame holds the k measured to 1 sigma_avg or better; a k known to +- several
+// sigma_avg (here -5, from flow rates with 30 % errors; the other k = 1 from 0.1 % errors) is left beyond it and counted, instead of
+// squeezing the others into a sliver of the frame.
+TEST(Report, KVersusStiffnessFrameLeavesAPoorlyKnownKBeyondItAndSaysSo) {
+  const json sweep = {{"name", "k_frame"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"lambda", {0.5, "inf"}}}, {{"E_sp", {100, 1000}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const bool poor = j["mu"].get<double>() > 0;  // lambda = 0.5
+    const double w = j["w"];
+    const double Q = poor ? 0.4 * (w + 5) : beverloo_model(w, 0.4, 1.0, 0.5);
+    return converged_summary(Q, (poor ? 0.3 : 0.001) * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
+  EXPECT_EQ(db.scalar_int("SELECT count(*) FROM beverloo_fits WHERE mu > 0 AND k_err > 1"), 2) << "the premise: two poorly known k";
+  const std::string gp = read(out / "k_vs_Esp.gp");
+  EXPECT_NE(gp.find("set label '2 ks with an error above 1 beyond the frame (beverloo_fits.md)'"), std::string::npos) << gp << read(out / "k_vs_Esp.dat");
+  const std::size_t range = gp.find("set yrange [");
+  ASSERT_NE(range, std::string::npos) << gp;
+  const double lo = std::stod(gp.substr(range + 12));
+  EXPECT_GT(lo, -5.0) << "-5 lies beyond the frame";
+  EXPECT_LT(lo, 1.0) << "the well-measured k = 1 inside it";
+  EXPECT_NE(read(out / "k_vs_Esp.svg").find("</svg>"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(Report, KHeatmapRingsAHeldKThatFoldsAFittedWidth) {
   // drag-only DP over a 2 x 2 (K_l, K_b) grid: Q = 10 |w - k|^(1/2) at w = 4 .. 10 with k = 4.5
   // in the cell (10, 10) (a law through the mirror at w = 4) and k = 2 elsewhere; the held fit

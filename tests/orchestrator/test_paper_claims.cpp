@@ -255,6 +255,40 @@ TEST(PaperClaims, CrossoverLambdaCStretchingAndThePrefactorRatio) {
   EXPECT_FALSE(C->agrees);  // (7 - 3) / 0.99 = 4.0
 }
 
+// C ~ 0.45 / 0.15 is the paper's fit with beta held at 1/2 and 3/2; a ratio of free fits' Cs
+// with other exponents (the text set: 2.45 and 0.86) depends on the length unit. Both rows,
+// each named; the held one's sigma takes the replicas' spread of ln C where it is the larger.
+TEST(PaperClaims, ThePrefactorRatioIsJudgedAsThePaperFitsItWithBetaHeld) {
+  CampaignFits fits;
+  fits.series.push_back(series("friction", 2, 0, 2.45, 0.1, /*C=*/0.05, 0.01));
+  fits.series.push_back(series("drag", 2, INFINITY, 0.86, 0.03, /*C=*/3.7, 0.3));
+  fits.series.push_back(series("mid", 2, 0.05, 1.2, 0.05));
+  BeverlooFit held_friction, held_drag;
+  held_friction.beta = 1.5, held_friction.C = 0.2, held_friction.C_err = 0.02;
+  held_drag.beta = 0.5, held_drag.C = 0.6, held_drag.C_err = 0.06;
+  fits.series[0].authors_fixed_hi = held_friction;
+  fits.series[0].log_C_at_beta_hi_replica_spread = 0.3;  // larger than its 10 % error
+  fits.series[1].authors_fixed_lo = held_drag;
+  Crossover g;
+  g.label = "2D group";
+  g.dimension = 2;
+  g.finite = {&fits.series[2]};
+  g.limit0 = &fits.series[0];
+  g.limit_inf = &fits.series[1];
+  fits.crossovers.push_back(g);
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* free_ratio = find(checks, "as a ratio, free fits", "drag / friction");
+  ASSERT_NE(free_ratio, nullptr);
+  EXPECT_NEAR(free_ratio->measured, 74.0, 1e-9);
+  EXPECT_NE(free_ratio->measured_text.find("(beta 0.86 and 2.45)"), std::string::npos) << free_ratio->measured_text;
+  const ClaimCheck* held = find(checks, "as a ratio, beta held at 1/2 and 3/2 (the paper's way)", "drag / friction");
+  ASSERT_NE(held, nullptr);
+  EXPECT_NEAR(held->measured, 3.0, 1e-12);
+  EXPECT_NEAR(held->sigma, 3.0 * std::hypot(0.1, 0.3), 1e-12) << "drag's 10 % error, friction's spread 0.3";
+  EXPECT_TRUE(held->agrees);
+  EXPECT_NE(held->measured_text.find("(C 0.6 / 0.2;"), std::string::npos) << held->measured_text;
+}
+
 // The paper's fixed plateaus can put 1/b inside (0, 1) for a curve that misses its points (the
 // text set's Fig. 4a: 1/b = 0.21 at chi2_red 29); the free-plateau fit's 1/b is judged beside it.
 TEST(PaperClaims, TheStretchingExponentIsJudgedWithBothSigmoidsEachNamed) {

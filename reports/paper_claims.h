@@ -16,7 +16,8 @@
 /// paper's values carry no errors ("~" in its text), so the rule uses the measurement's: agree
 /// when |measured - paper| <= 2 sigma, sigma the larger of the fit's error and the replicas'
 /// spread (a direction, such as lambda_c's fall, is claimed beyond 2 sigma). Nothing is
-/// rescaled and no fit is made here.
+/// rescaled and no fit is made here. The checks live in reports/claims/ (checks.h lists them by
+/// file; verdict.h has the rules they share).
 #include <string>
 #include <vector>
 

@@ -1,9 +1,11 @@
 // The paper's Fig. 5 in its own form: v_g(h) on the centre line in the three regimes of one
 // crossover group, friction only (lambda -> 0), the finite lambda nearest the fitted lambda_c
-// (the free-plateau fit's where it has one among the measured lambdas), and drag only (lambda -> inf), one curve per w (replicas averaged at each h; band: their
-// standard error, or the run's own error for one replica). Each panel's title gives the
+// (the free-plateau fit's where it has one among the measured lambdas), and drag only (lambda
+// -> inf), one curve per w (replicas averaged at each h; band: their standard error, or the
+// run's own error for one replica). Each panel's title gives the
 // exponent of v_g(h = 0) ~ w^x over the panel's widths (log-log least squares on the means):
 // the paper's claim is x > 0 for lambda -> 0, x < 0 for lambda -> inf, weak near lambda_c.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>

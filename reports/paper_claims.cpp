@@ -18,6 +18,7 @@ std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
     limit_independence(fits, false, d, out);
   }
   crossover_checks(fits, out);
+  prefactor_ratio_checks(fits, out);
   theta_checks(fits, out);
   one_lambda_theta_checks(fits, out);
   force_ratio_checks(fits, out);

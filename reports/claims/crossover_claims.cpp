@@ -1,5 +1,5 @@
-// beta(lambda)'s crossover: lambda_c and 1/b with each sigmoid, the limits' prefactor ratio, and
-// lambda_c's fall with the hopper angle (Fig. 4, 6).
+// beta(lambda)'s crossover: lambda_c and 1/b with each sigmoid, and lambda_c's fall with the
+// hopper angle (Fig. 4, 6).
 #include "reports/claims/checks.h"
 #include "reports/claims/verdict.h"
 
@@ -102,27 +102,6 @@ ClaimCheck stretching_check(const Crossover& g, const CrossoverFit& fit, bool pl
   return c;
 }
 
-/// C ~ 0.45 / 0.15 as the paper fits it: beta held at 1/2 (drag only) and 3/2 (friction only),
-/// k and C free (its Fig. 2 and Appendix B). C carries the unit sigma_avg^(d - 1/2 - beta), so a
-/// ratio of free fits' Cs whose exponents differ (the text set: 2.45 and 0.86) depends on the
-/// length unit; the held fits' ratio does not, since both exponents are the paper's.
-void prefactor_ratio_held(const Series& friction, const Series& drag, std::vector<ClaimCheck>& out) {
-  if (!friction.authors_fixed_hi || !drag.authors_fixed_lo) return;
-  const BeverlooFit &cf = *friction.authors_fixed_hi, &cd = *drag.authors_fixed_lo;
-  if (!(cf.C > 0) || !(cd.C > 0)) return;
-  ClaimCheck c;
-  c.claim = "prefactor C: ~0.45 drag only against ~0.15 friction only (N = 1600), as a ratio, beta held at 1/2 and 3/2 "
-            "(the paper's way)";
-  c.subject = drag.label + " / " + friction.label;
-  c.paper = "~3 (0.45 / 0.15)";
-  c.measured = cd.C / cf.C;
-  c.sigma = c.measured * std::hypot(held_C_rel_sigma(cd, drag.log_C_at_beta_lo_replica_spread),
-                                    held_C_rel_sigma(cf, friction.log_C_at_beta_hi_replica_spread));
-  c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (C " + format_value(cd.C, 3) + " / " +
-                    format_value(cf.C, 3) + "; sigma from the held fits' errors or the replicas' spread of C, the larger)";
-  judge(c, 3.0);
-  out.push_back(c);
-}
 }  // namespace
 
 void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
@@ -147,26 +126,6 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
     }
     for (const auto* f : {&g.fit, &g.fit_free})
       if (*f && (*f)->b > 0) out.push_back(stretching_check(g, **f, f == &g.fit_free, f == &g.fit ? g.spread : g.spread_free));
-    // C ~ 0.45 with drag only and ~0.15 with friction only (2D, N = 1600): their ratio needs
-    // no flow-rate unit (the paper's axes may carry one; docs/paper.md)
-    const Series *f0 = g.limit0, *finf = g.limit_inf;
-    if (g.dimension == 2 && f0 && finf && f0->fit && finf->fit && f0->N == 1600 && at_right_angle(*f0) &&
-        f0->fit->C > 0 && finf->fit->C > 0) {
-      ClaimCheck c;
-      c.claim = "prefactor C: ~0.45 drag only against ~0.15 friction only (N = 1600), as a ratio, free fits";
-      c.subject = finf->label + " / " + f0->label;
-      c.paper = "~3 (0.45 / 0.15)";
-      c.measured = finf->fit->C / f0->fit->C;
-      c.sigma = c.measured * std::hypot(finf->fit->C_err / finf->fit->C, f0->fit->C_err / f0->fit->C);
-      c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (beta " + format_value(finf->fit->beta, 3) +
-                        " and " + format_value(f0->fit->beta, 3) + ")";
-      if (fit_quality(*f0) != "ok" || fit_quality(*finf) != "ok")
-        c.verdict = "not judged: a limit's fit is not determined";
-      else
-        judge(c, 3.0);
-      out.push_back(c);
-    }
-    if (g.dimension == 2 && f0 && finf && f0->N == 1600 && at_right_angle(*f0)) prefactor_ratio_held(*f0, *finf, out);
   }
 }
 

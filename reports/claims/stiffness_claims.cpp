@@ -118,6 +118,85 @@ void heatmap_k_checks(const CampaignFits& fits, bool drag, std::vector<ClaimChec
 }
 
 namespace {
+/// A limit series the paper's C ~ 0.45 / 0.15 speaks of: a simulated 2D flow at theta_w = 90
+/// with N = 1600, friction only or drag only.
+bool prefactor_limit(const Series& s) {
+  return s.dimension == 2 && s.N == 1600 && simulated_flow(s) && !s.drain && (s.lambda == 0 || std::isinf(s.lambda));
+}
+
+/// The free fits' ratio: the exponents named, since C carries the unit sigma_avg^(d - 1/2 - beta)
+/// and a ratio of Cs with exponents unlike the paper's depends on the length unit.
+void prefactor_ratio_free(const Series& friction, const Series& drag, std::vector<ClaimCheck>& out) {
+  if (!friction.fit || !drag.fit || !(friction.fit->C > 0) || !(drag.fit->C > 0)) return;
+  ClaimCheck c;
+  c.claim = "prefactor C: ~0.45 drag only against ~0.15 friction only (N = 1600), as a ratio, free fits";
+  c.subject = drag.label + " / " + friction.label;
+  c.paper = "~3 (0.45 / 0.15)";
+  c.measured = drag.fit->C / friction.fit->C;
+  c.sigma = c.measured * std::hypot(drag.fit->C_err / drag.fit->C, friction.fit->C_err / friction.fit->C);
+  c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (beta " + format_value(drag.fit->beta, 3) + " and " +
+                    format_value(friction.fit->beta, 3) + ")";
+  if (fit_quality(friction) != "ok" || fit_quality(drag) != "ok")
+    c.verdict = "not judged: a limit's fit is not determined";
+  else
+    judge(c, 3.0);
+  out.push_back(c);
+}
+
+/// C ~ 0.45 / 0.15 as the paper fits it: beta held at 1/2 (drag only) and 3/2 (friction only),
+/// k and C free (its Fig. 2 and Appendix B). C carries the unit sigma_avg^(d - 1/2 - beta), so a
+/// ratio of free fits' Cs whose exponents differ (the text set: 2.45 and 0.86) depends on the
+/// length unit; the held fits' ratio does not, since both exponents are the paper's.
+void prefactor_ratio_held(const Series& friction, const Series& drag, std::vector<ClaimCheck>& out) {
+  if (!friction.authors_fixed_hi || !drag.authors_fixed_lo) return;
+  const BeverlooFit &cf = *friction.authors_fixed_hi, &cd = *drag.authors_fixed_lo;
+  if (!(cf.C > 0) || !(cd.C > 0)) return;
+  ClaimCheck c;
+  c.claim = "prefactor C: ~0.45 drag only against ~0.15 friction only (N = 1600), as a ratio, beta held at 1/2 and 3/2 "
+            "(the paper's way)";
+  c.subject = drag.label + " / " + friction.label;
+  c.paper = "~3 (0.45 / 0.15)";
+  c.measured = cd.C / cf.C;
+  c.sigma = c.measured * std::hypot(held_C_rel_sigma(cd, drag.log_C_at_beta_lo_replica_spread),
+                                    held_C_rel_sigma(cf, friction.log_C_at_beta_hi_replica_spread));
+  c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (C " + format_value(cd.C, 3) + " / " +
+                    format_value(cf.C, 3) + "; sigma from the held fits' errors or the replicas' spread of C, the larger)";
+  judge(c, 3.0);
+  out.push_back(c);
+}
+}  // namespace
+
+/// C ~ 0.45 with drag only and ~0.15 with friction only (2D, N = 1600), "nearly independent of
+/// softness": their ratio needs no flow-rate unit (the paper's axes may carry one;
+/// docs/paper.md). The two limits of one system: those a beta(lambda) group joins (the same
+/// dissipation scale), and where a system has one limit series of each kind and no such group
+/// (a campaign of the limits alone, as the paper's Fig. 2), those two.
+void prefactor_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  std::vector<std::pair<const Series*, const Series*>> pairs;  // (friction, drag)
+  for (const Crossover& g : fits.crossovers)
+    if (g.limit0 && g.limit_inf && prefactor_limit(*g.limit0) && prefactor_limit(*g.limit_inf))
+      pairs.emplace_back(g.limit0, g.limit_inf);
+  std::map<std::string, std::pair<std::vector<const Series*>, std::vector<const Series*>>> by_system;
+  for (const Series& s : fits.series)
+    if (prefactor_limit(s)) (s.lambda == 0 ? by_system[s.base_key].first : by_system[s.base_key].second).push_back(&s);
+  for (const auto& [key, limits] : by_system) {
+    const auto& [friction, drag] = limits;
+    const bool grouped = std::any_of(pairs.begin(), pairs.end(), [&key](const auto& p) { return p.first->base_key == key; });
+    if (!grouped && friction.size() == 1 && drag.size() == 1) pairs.emplace_back(friction.front(), drag.front());
+  }
+  // in the series' order (the table's order does not depend on map keys), each pair once
+  auto position = [&fits](const Series* s) { return s - fits.series.data(); };
+  std::sort(pairs.begin(), pairs.end(), [&](const auto& a, const auto& b) {
+    return std::make_pair(position(a.first), position(a.second)) < std::make_pair(position(b.first), position(b.second));
+  });
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for (const auto& [friction, drag] : pairs) {
+    prefactor_ratio_free(*friction, *drag, out);
+    prefactor_ratio_held(*friction, *drag, out);
+  }
+}
+
+namespace {
 /// Appendix B (Fig. B): SP in the hard-particle limit, "E_sp = 1e5" (2D, theta_w = 90). With
 /// friction only and beta held at 3/2, C ~ 0.12 and k ~ 1.6; with drag only and beta held at 1/2,
 /// C ~ 0.42 and k ~ 3.4. k is checked in each limit and C as the ratio of the two limits' held

@@ -143,26 +143,36 @@ void prefactor_ratio_free(const Series& friction, const Series& drag, std::vecto
   out.push_back(c);
 }
 
-/// C ~ 0.45 / 0.15 as the paper fits it: beta held at 1/2 (drag only) and 3/2 (friction only),
-/// k and C free (its Fig. 2 and Appendix B). C carries the unit sigma_avg^(d - 1/2 - beta), so a
-/// ratio of free fits' Cs whose exponents differ (the text set: 2.45 and 0.86) depends on the
-/// length unit; the held fits' ratio does not, since both exponents are the paper's.
-void prefactor_ratio_held(const Series& friction, const Series& drag, std::vector<ClaimCheck>& out) {
-  if (!friction.authors_fixed_hi || !drag.authors_fixed_lo) return;
+/// C(drag) / C(friction) of two limit series with beta held at 1/2 and 3/2 as the paper fits
+/// them (its Fig. 2 and Appendix B), against `paper_value`; sigma the larger of each held fit's
+/// error and its replicas' spread of ln C. Nothing without both held fits.
+std::optional<ClaimCheck> held_C_ratio_check(const Series& friction, const Series& drag, const std::string& claim,
+                                             const std::string& paper, double paper_value) {
+  if (!friction.authors_fixed_hi || !drag.authors_fixed_lo) return std::nullopt;
   const BeverlooFit &cf = *friction.authors_fixed_hi, &cd = *drag.authors_fixed_lo;
-  if (!(cf.C > 0) || !(cd.C > 0)) return;
+  if (!(cf.C > 0) || !(cd.C > 0)) return std::nullopt;
   ClaimCheck c;
-  c.claim = "prefactor C: ~0.45 drag only against ~0.15 friction only (N = 1600), as a ratio, beta held at 1/2 and 3/2 "
-            "(the paper's way)";
+  c.claim = claim;
   c.subject = drag.label + " / " + friction.label;
-  c.paper = "~3 (0.45 / 0.15)";
+  c.paper = paper;
   c.measured = cd.C / cf.C;
   c.sigma = c.measured * std::hypot(held_C_rel_sigma(cd, drag.log_C_at_beta_lo_replica_spread),
                                     held_C_rel_sigma(cf, friction.log_C_at_beta_hi_replica_spread));
   c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (C " + format_value(cd.C, 3) + " / " +
                     format_value(cf.C, 3) + "; sigma from the held fits' errors or the replicas' spread of C, the larger)";
-  judge(c, 3.0);
-  out.push_back(c);
+  judge(c, paper_value);
+  return c;
+}
+
+/// C ~ 0.45 / 0.15 as the paper fits it, beta held. C carries the unit sigma_avg^(d - 1/2 -
+/// beta), so a ratio of free fits' Cs whose exponents differ (the text set: 2.45 and 0.86)
+/// depends on the length unit; the held fits' ratio does not, since both exponents are the paper's.
+void prefactor_ratio_held(const Series& friction, const Series& drag, std::vector<ClaimCheck>& out) {
+  if (auto c = held_C_ratio_check(friction, drag,
+                                  "prefactor C: ~0.45 drag only against ~0.15 friction only (N = 1600), as a ratio, beta "
+                                  "held at 1/2 and 3/2 (the paper's way)",
+                                  "~3 (0.45 / 0.15)", 3.0))
+    out.push_back(*c);
 }
 }  // namespace
 
@@ -224,23 +234,14 @@ void hard_limit_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
   }
   // the two limits of one hard series (same base_key: all but the dissipation equal)
   for (const Series& f : fits.series) {
-    if (!hard(f) || !friction.holds(f) || !friction.held(f) || !(friction.held(f)->C > 0)) continue;
-    for (const Series& d : fits.series) {
-      if (&d == &f || !hard(d) || !drag.holds(d) || d.base_key != f.base_key || !drag.held(d) || !(drag.held(d)->C > 0))
-        continue;
-      const BeverlooFit &cf = *friction.held(f), &cd = *drag.held(d);
-      ClaimCheck c;
-      c.claim = "hard-particle limit (Appendix B, SP E_sp = 1e5): C ~ 0.42 drag only against ~0.12 friction only, as a "
-                "ratio (beta held at 1/2 and 3/2)";
-      c.subject = d.label + " / " + f.label;
-      c.paper = "~3.5 (0.42 / 0.12)";
-      c.measured = cd.C / cf.C;
-      c.sigma = c.measured * std::hypot(drag.C_rel_sigma(d), friction.C_rel_sigma(f));
-      c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (C " + format_value(cd.C, 3) + " / " +
-                        format_value(cf.C, 3) + "; sigma from the held fits' errors or the replicas' spread of C, the larger)";
-      judge(c, 0.42 / 0.12);
-      out.push_back(c);
-    }
+    if (!hard(f) || !friction.holds(f)) continue;
+    for (const Series& d : fits.series)
+      if (&d != &f && hard(d) && drag.holds(d) && d.base_key == f.base_key)
+        if (auto c = held_C_ratio_check(f, d,
+                                        "hard-particle limit (Appendix B, SP E_sp = 1e5): C ~ 0.42 drag only against ~0.12 "
+                                        "friction only, as a ratio (beta held at 1/2 and 3/2)",
+                                        "~3.5 (0.42 / 0.12)", 0.42 / 0.12))
+          out.push_back(*c);
   }
 }
 

@@ -50,6 +50,9 @@ struct Series {
   /// The series' job without N (dissipation kept): the series that share it differ only in the
   /// number of particles (the paper's Appendix C, Fig. C(b))
   std::string size_free_key;
+  /// The series' job without E_sp (dissipation kept): SP series that share it differ only in
+  /// their stiffness (the paper's Fig. 7a, and its "C nearly independent of softness")
+  std::string stiffness_free_key;
   /// The series' job without the particle model and its own settings (model, E_sp,
   /// sp_contact_law, dp.*, the wall stiffness E_w) and without the numerics and run settings
   /// (run.*, dt, fire, max_overlap, skin, observables): SP and DP series that share it flow under

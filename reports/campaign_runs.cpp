@@ -109,6 +109,9 @@ CampaignRuns read_campaign_runs(db::Database& db, const CampaignScope& scope, Fl
       json sized = series_job;
       sized.erase("N");
       s.size_free_key = sha256_hex(sized.dump());
+      json unstiffened = series_job;
+      unstiffened.erase("E_sp");
+      s.stiffness_free_key = sha256_hex(unstiffened.dump());
       json system = series_job;  // what the model's own settings leave: the flow's conditions
       for (const char* k : {"model", "E_sp", "sp_contact_law", "dp", "E_w", "run", "dt", "fire", "max_overlap", "skin", "observables"})
         system.erase(k);

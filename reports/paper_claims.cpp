@@ -19,6 +19,7 @@ std::vector<ClaimCheck> check_paper_claims(const CampaignFits& fits) {
   }
   crossover_checks(fits, out);
   prefactor_ratio_checks(fits, out);
+  prefactor_softness_checks(fits, out);
   theta_checks(fits, out);
   one_lambda_theta_checks(fits, out);
   force_ratio_checks(fits, out);

@@ -25,6 +25,8 @@ void force_ratio_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out);
 void heatmap_k_checks(const CampaignFits& fits, bool drag, std::vector<ClaimCheck>& out);
 void hard_limit_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out);
 void rigid_limit_model_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out);
+/// Fig. 7a's C at the stiffest E_sp against the softest, beta held, per limit.
+void prefactor_softness_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out);
 void prefactor_growth_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out);
 void experiment_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out);
 

@@ -299,6 +299,57 @@ void rigid_limit_model_checks(const CampaignFits& fits, std::vector<ClaimCheck>&
   }
 }
 
+/// "C ~ 0.15 with friction only and ~0.45 with drag only, nearly independent of softness" (Fig.
+/// 7a; "for all stiffnesses"): per group of SP limit series (2D, theta_w = 90) that differ only
+/// in E_sp (Series::stiffness_free_key), C with beta held as the paper fits it (Cs of different
+/// exponents carry different units) at the stiffest E_sp against the softest, judged as no change
+/// in log C; sigma from both held fits (the larger of each one's error and its replicas' spread
+/// of ln C). The text gives the held C at every stiffness of the group.
+void prefactor_softness_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  auto held = [](const Series& s) -> const BeverlooFit* {
+    const std::optional<BeverlooFit>& h = s.lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo;
+    return h && h->C > 0 && h->C_err > 0 ? &*h : nullptr;
+  };
+  std::vector<std::string> order;  // groups in the order of their first series
+  std::map<std::string, std::vector<const Series*>> groups;
+  for (const Series& s : fits.series) {
+    if (s.model != "sp" || s.dimension != 2 || !simulated_flow(s) || s.drain || !(s.lambda == 0 || std::isinf(s.lambda)) ||
+        !(s.E_sp > 0) || !held(s))
+      continue;
+    const std::string key = s.stiffness_free_key + (s.lambda == 0 ? "|friction only" : "|drag only");
+    auto& list = groups[key];
+    if (list.empty()) order.push_back(key);
+    list.push_back(&s);
+  }
+  for (const std::string& key : order) {
+    std::vector<const Series*> list = groups[key];
+    if (list.size() < 2) continue;
+    std::sort(list.begin(), list.end(), [](const Series* a, const Series* b) { return a->E_sp < b->E_sp; });
+    const Series &soft = *list.front(), &stiff = *list.back();
+    const bool friction = soft.lambda == 0;
+    const double log_ratio = std::log(held(stiff)->C / held(soft)->C);
+    const double log_sigma =
+        std::hypot(held_C_rel_sigma(*held(stiff), friction ? stiff.log_C_at_beta_hi_replica_spread : stiff.log_C_at_beta_lo_replica_spread),
+                   held_C_rel_sigma(*held(soft), friction ? soft.log_C_at_beta_hi_replica_spread : soft.log_C_at_beta_lo_replica_spread));
+    ClaimCheck c;
+    c.claim = std::string("prefactor C nearly independent of softness (Fig. 7a), ") +
+              (friction ? "friction only, beta held at 3/2" : "drag only, beta held at 1/2") +
+              ": C at the stiffest E_sp against the softest";
+    c.subject = stiff.label + " / " + soft.label;
+    c.paper = friction ? "~1 (C ~ 0.15 at every E_sp)" : "~1 (C ~ 0.45 at every E_sp)";
+    c.measured = std::exp(log_ratio);
+    c.sigma = c.measured * log_sigma;
+    c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (C";
+    for (const Series* s : list) c.measured_text += " " + format_value(held(*s)->C, 3);
+    c.measured_text += " at E_sp " + format_value(soft.E_sp, 6) + " .. " + format_value(stiff.E_sp, 6) + ")";
+    if (!(log_sigma > 0))
+      c.verdict = "not judged: no error";
+    else
+      judge_no_change(c, log_ratio / log_sigma);
+    out.push_back(c);
+  }
+}
+
 /// Appendix C, Fig. C(b): "C grows roughly linearly with system size, but the slope is much
 /// weaker for systems with lambda -> inf". Per group of limit series that differ only in N
 /// (Series::size_free_key), C of the fit with beta held (d - 1/2 friction only, d - 3/2 drag

@@ -323,6 +323,39 @@ TEST(PaperClaims, ThePrefactorRatioOfALimitsOnlyCampaignPairsTheLimitsOfOneSyste
   EXPECT_FALSE(rows[1]->agrees) << "6 +- 0.85: z = 3.5";
 }
 
+// Fig. 7a's "C nearly independent of softness", as the paper fits C (beta held): per limit, the
+// held C at the stiffest E_sp against the softest of series that differ only in E_sp. Drag only
+// doubles (differs, rises); friction only stays (agrees); a series of another system (its own
+// stiffness_free_key) is not compared with them.
+TEST(PaperClaims, ThePrefactorAgainstSoftnessComparesTheStiffestAndSoftestHeldC) {
+  CampaignFits fits;
+  auto limit = [&](const std::string& label, double lambda, double E_sp, double held_C, const std::string& system) {
+    Series s = series(label, 2, lambda, lambda == 0 ? 1.5 : 0.5, 0.05);
+    s.E_sp = E_sp;
+    s.stiffness_free_key = system + (lambda == 0 ? "|friction" : "|drag");
+    BeverlooFit h;
+    h.C = held_C, h.C_err = 0.05 * held_C;
+    (lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo) = h;
+    fits.series.push_back(s);
+  };
+  limit("drag soft", INFINITY, 10, 0.45, "A");
+  limit("drag stiff", INFINITY, 1000, 0.9, "A");
+  limit("drag mid", INFINITY, 100, 0.46, "A");
+  limit("friction soft", 0, 10, 0.15, "A");
+  limit("friction stiff", 0, 1000, 0.155, "A");
+  limit("drag, other system", INFINITY, 1e4, 5.0, "B");
+  const auto checks = check_paper_claims(fits);
+  const auto rows = checks_about(checks, "nearly independent of softness");
+  ASSERT_EQ(rows.size(), 2u) << "drag and friction of system A; B has one stiffness";
+  EXPECT_EQ(rows[0]->subject, "drag stiff / drag soft");
+  EXPECT_NEAR(rows[0]->measured, 2.0, 1e-12);
+  EXPECT_NEAR(rows[0]->sigma, 2.0 * std::hypot(0.05, 0.05), 1e-12);
+  EXPECT_EQ(rows[0]->verdict.rfind("differs (rises", 0), 0u) << rows[0]->verdict;
+  EXPECT_NE(rows[0]->measured_text.find("(C 0.45 0.46 0.9 at E_sp 10 .. 1000)"), std::string::npos) << rows[0]->measured_text;
+  EXPECT_EQ(rows[1]->subject, "friction stiff / friction soft");
+  EXPECT_TRUE(rows[1]->agrees) << rows[1]->verdict;
+}
+
 // The paper's fixed plateaus can put 1/b inside (0, 1) for a curve that misses its points (the
 // text set's Fig. 4a: 1/b = 0.21 at chi2_red 29); the free-plateau fit's 1/b is judged beside it.
 TEST(PaperClaims, TheStretchingExponentIsJudgedWithBothSigmoidsEachNamed) {

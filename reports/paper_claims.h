@@ -7,7 +7,8 @@
 /// lambda_c and the stretching exponent of beta(lambda), the fall of lambda_c with the hopper
 /// angle (Fig. 6; read at one lambda where no angle has a crossover fit: beta falls with the
 /// angle, and lies where the paper's Eq. 2 with its lambda_c(theta_w) puts it) and the rise of the
-/// drag-to-friction force ratio as it falls (Fig. 6b), the ratio of the prefactors C of the two limits, the corners of Fig. 7b's and
+/// drag-to-friction force ratio as it falls (Fig. 6b), the ratio of the prefactors C of the two limits (free, and with beta held
+/// as the paper fits) and the held C's independence of E_sp (Fig. 7a), the corners of Fig. 7b's and
 /// 7c's k maps (smooth DP in each limit, k with beta held), Appendix B's hard-particle limit (SP at
 /// E_sp >= 1e5: k of each limit with beta held, the ratio of their C; rigid DP against hard SP,
 /// Q width by width), Appendix C's prefactor against N (Fig. C(b)), and the experiments' beta and k.

@@ -37,6 +37,20 @@ std::string spread_or_none(const Crossover::ReplicaSpread& spread) {
   return std::isnan(spread.log10_lambda_c) ? "none" : format_value(spread.log10_lambda_c, 2);
 }
 
+/// The smallest and largest finite lambda of a group's fitted series.
+std::pair<double, double> measured_lambdas(const Crossover& g) {
+  double lo = INFINITY, hi = 0;
+  for (const Series* s : g.finite) lo = std::min(lo, s->lambda), hi = std::max(hi, s->lambda);
+  return {lo, hi};
+}
+
+/// Whether a fit's lambda_c lies among its group's measured lambdas (else the sigmoid's
+/// extrapolation: with the paper's fixed plateaus it goes there when the data never cross d - 1).
+bool inside_measured(const CrossoverFit& fit, const Crossover& g) {
+  const auto [lo, hi] = measured_lambdas(g);
+  return fit.lambda_c >= lo && fit.lambda_c <= hi;
+}
+
 /// lambda_c against the paper's value on the scale it is fitted and drawn on (log10 lambda_c,
 /// with its own error): a linear z would call a lambda_c of 15 +- 8 "2 sigma from 0.07". A
 /// midpoint outside the group's measured lambdas is an extrapolation of the sigmoid (with the
@@ -45,9 +59,8 @@ std::string spread_or_none(const Crossover::ReplicaSpread& spread) {
 void judge_lambda_c(ClaimCheck& c, const CrossoverFit& fit, const Crossover& g, const Crossover::ReplicaSpread& spread,
                     double paper_value) {
   const double log10_sigma = log10_lambda_c_sigma(fit, spread);
-  double lo = INFINITY, hi = 0;
-  for (const Series* s : g.finite) lo = std::min(lo, s->lambda), hi = std::max(hi, s->lambda);
-  if (!(fit.lambda_c >= lo && fit.lambda_c <= hi)) {
+  const auto [lo, hi] = measured_lambdas(g);
+  if (!inside_measured(fit, g)) {
     c.verdict = "not judged: lambda_c outside the measured lambdas (" + format_value(lo, 2) + " .. " + format_value(hi, 2) +
                 "), an extrapolation (chi2_red " + format_value(fit.chi2_red, 2) + ")";
     return;
@@ -168,6 +181,15 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         if (!std::isnan(spread.log10_lambda_c) || !std::isnan(spread_ref.log10_lambda_c))
           c.measured_text += "; spread of log10 lambda_c over replicas " + spread_or_none(spread) + " and " +
                              spread_or_none(spread_ref) + " at " + ref_text + " deg";
+        const std::string outside = !inside_measured(*at, g)                 ? format_value(theta, 3)
+                                    : !inside_measured(*at_ref, *ref->second) ? ref_text
+                                                                              : "";
+        if (!outside.empty()) {
+          // a midpoint beyond a group's measured lambdas is the sigmoid's extrapolation
+          c.verdict = "not judged: lambda_c at " + outside + " deg outside its measured lambdas, an extrapolation";
+          out.push_back(c);
+          continue;
+        }
         if (!(log_sigma > 0)) {
           c.verdict = "not judged: no error";
         } else if (plateau) {

@@ -40,15 +40,19 @@ Crossover angle_group(const std::string& family, const Series& only) {
   return g;
 }
 
-/// One crossover group per (family, theta_w, lambda_c, error of log10 lambda_c), each with one
-/// series at that angle and the paper's sigmoid fitted: groups that differ only in the angle.
+/// One crossover group per (family, theta_w, lambda_c, error of log10 lambda_c), each with two
+/// series at that angle (lambda = 1e-4 and 10: every lambda_c of these tests lies among them)
+/// and the paper's sigmoid fitted: groups that differ only in the angle.
 void add_angle_groups(CampaignFits& fits, const std::vector<std::tuple<std::string, double, double, double>>& groups) {
-  fits.series.reserve(groups.size());  // the groups point into it
+  fits.series.reserve(2 * groups.size());  // the groups point into it
   for (const auto& [family, theta, lambda_c, log10_err] : groups) {
-    Series s = series(family, 2, 0.05, 1.0, 0.05);
-    s.theta_left = s.theta_right = theta;
-    fits.series.push_back(s);
-    Crossover g = angle_group(family, fits.series.back());
+    for (const double lambda : {1e-4, 10.0}) {
+      Series s = series(family, 2, lambda, 1.0, 0.05);
+      s.theta_left = s.theta_right = theta;
+      fits.series.push_back(s);
+    }
+    Crossover g = angle_group(family, fits.series[fits.series.size() - 2]);
+    g.finite.push_back(&fits.series.back());
     CrossoverFit f;
     f.lambda_c = lambda_c, f.log10_lambda_c = std::log10(lambda_c), f.log10_lambda_c_err = log10_err;
     f.lambda_c_err = lambda_c * std::log(10.0) * log10_err;
@@ -419,6 +423,26 @@ TEST(PaperClaims, LambdaCsFallWithTheAngleIsADirectionJudgedBeyondTwoSigma) {
   EXPECT_EQ(b60->verdict.rfind("differs (rises", 0), 0u) << b60->verdict;
   EXPECT_EQ(find(checks, claim, "C at theta_w = 60"), nullptr) << "no group at 90 deg to compare with";
   EXPECT_EQ(find(checks, "free plateaus: lambda_c(theta_w)", "A at theta_w = 60"), nullptr) << "no free fit";
+}
+
+// A lambda_c beyond its group's measured lambdas (1e-4 .. 10 here) is the sigmoid's
+// extrapolation: its ratio to another angle's is shown but not judged (the text set's Fig. 6
+// at 30 deg put the paper's form at 8.5e-4 below its lowest lambda, 1e-3, and was read as a fall).
+TEST(PaperClaims, AnExtrapolatedLambdaCIsNotJudgedAgainstAnotherAngle) {
+  CampaignFits fits;
+  add_angle_groups(fits, {{"X", 90, 0.05, 0.05}, {"X", 30, 5e-5, 0.05}, {"X", 20, 0.006, 0.05}});
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* at30 = find(checks, "lambda_c falls as theta_w falls (Fig. 6), the paper's sigmoid", "X at theta_w = 30");
+  ASSERT_NE(at30, nullptr);
+  EXPECT_FALSE(at30->judged);
+  EXPECT_EQ(at30->verdict, "not judged: lambda_c at 30 deg outside its measured lambdas, an extrapolation");
+  EXPECT_NEAR(at30->measured, 1e-3, 1e-12) << "the ratio is still shown";
+  const ClaimCheck* plateau = find(checks, "lambda_c stops falling below theta_w = 30 deg", "X at theta_w = 20");
+  ASSERT_NE(plateau, nullptr);
+  EXPECT_EQ(plateau->verdict, "not judged: lambda_c at 30 deg outside its measured lambdas, an extrapolation");
+  const ClaimCheck* at20 = find(checks, "lambda_c falls as theta_w falls (Fig. 6), the paper's sigmoid", "X at theta_w = 20");
+  ASSERT_NE(at20, nullptr);
+  EXPECT_TRUE(at20->judged) << "both inside: judged as before";
 }
 
 TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "reports/crossover_groups.h"
 #include "reports/number_format.h"
@@ -49,6 +50,31 @@ std::pair<double, double> measured_lambdas(const Crossover& g) {
 bool inside_measured(const CrossoverFit& fit, const Crossover& g) {
   const auto [lo, hi] = measured_lambdas(g);
   return fit.lambda_c >= lo && fit.lambda_c <= hi;
+}
+
+/// Where beta(lambda) crosses d - 1, the paper's sigmoid's midpoint by construction, without a
+/// sigmoid: log10 lambda interpolated linearly between the two measured lambdas (determined free
+/// fits) that bracket the crossing, the first such pair from below, and its sigma from the two
+/// exponents' errors. Nothing when the measured exponents never cross d - 1.
+struct MidpointCrossing {
+  double log10_lambda = 0, sigma = 0, lambda_lo = 0, lambda_hi = 0;
+};
+std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g) {
+  std::vector<const Series*> points;
+  for (const Series* s : g.finite)
+    if (s->fit && fit_quality(*s) == "ok" && s->lambda > 0) points.push_back(s);
+  std::sort(points.begin(), points.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
+  const double level = g.dimension - 1.0;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const double b1 = points[i]->fit->beta, b2 = points[i + 1]->fit->beta;
+    if ((b1 - level) * (b2 - level) > 0 || b1 == b2) continue;
+    const double x1 = std::log10(points[i]->lambda), x2 = std::log10(points[i + 1]->lambda);
+    const double f = (b1 - level) / (b1 - b2);
+    const double d1 = (x2 - x1) * (level - b2) / ((b1 - b2) * (b1 - b2)), d2 = (x2 - x1) * (b1 - level) / ((b1 - b2) * (b1 - b2));
+    return MidpointCrossing{x1 + f * (x2 - x1), std::hypot(d1 * points[i]->fit->beta_err, d2 * points[i + 1]->fit->beta_err),
+                            points[i]->lambda, points[i + 1]->lambda};
+  }
+  return std::nullopt;
 }
 
 /// lambda_c against the paper's value on the scale it is fitted and drawn on (log10 lambda_c,
@@ -202,6 +228,33 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         append_chi2_scaled_z(c, log_ratio / log_sigma_scaled, {chi2_scale(*at), chi2_scale(*at_ref)});
         out.push_back(c);
       }
+      // the same without a sigmoid: where each group's measured beta crosses d - 1
+      const std::optional<MidpointCrossing> at = crossing_of_d_minus_1(g), at_ref = crossing_of_d_minus_1(*ref->second);
+      if (!at || !at_ref) return;
+      ClaimCheck c;
+      c.claim = plateau ? "lambda_c stops falling below theta_w = 30 deg (Fig. 6, a plateau ~5e-3), where beta crosses d - 1 "
+                          "(interpolated): lambda(theta_w) / lambda(30)"
+                        : "lambda_c falls as theta_w falls (Fig. 6), where beta crosses d - 1 (interpolated): lambda(theta_w) / "
+                          "lambda(90)";
+      c.subject = g.label + " at theta_w = " + format_value(theta, 3);
+      c.paper = plateau ? "~1 (a plateau)" : theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
+      const double log_ratio = at->log10_lambda - at_ref->log10_lambda, log_sigma = std::hypot(at->sigma, at_ref->sigma);
+      c.measured = std::pow(10.0, log_ratio);
+      c.sigma = c.measured * std::log(10.0) * log_sigma;
+      auto crossing_text = [](const MidpointCrossing& m) {
+        return format_value(std::pow(10.0, m.log10_lambda), 2) + " (between " + format_value(m.lambda_lo, 2) + " and " +
+               format_value(m.lambda_hi, 2) + ")";
+      };
+      c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (" + crossing_text(*at) + " against " +
+                        crossing_text(*at_ref) + " at " + format_value(reference, 3) +
+                        " deg; sigma from the exponents' errors, not the interpolation's)";
+      if (!(log_sigma > 0))
+        c.verdict = "not judged: no error";
+      else if (plateau)
+        judge_no_change(c, log_ratio / log_sigma);
+      else
+        judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
+      out.push_back(c);
     };
     for (const auto& [theta, g] : by_theta)
       if (theta < 90) compare(theta, *g, 90, false);

@@ -445,6 +445,37 @@ TEST(PaperClaims, AnExtrapolatedLambdaCIsNotJudgedAgainstAnotherAngle) {
   EXPECT_TRUE(at20->judged) << "both inside: judged as before";
 }
 
+// Without a sigmoid: where each angle's measured beta(lambda) crosses d - 1, interpolated in
+// log10 lambda between the bracketing lambdas. 90 deg: 1.4 at 1e-2, 0.6 at 1e-1 -> 10^-1.5, log10
+// sigma 0.05 hypot(0.625, 0.625) = 0.0442 (d x / d beta = 0.4 / 0.8^2 each); 30 deg: 1.2 at 1e-3,
+// 0.8 at 1e-2 -> 10^-2.5, 0.05 hypot(1.25, 1.25) = 0.0884: a fall of one decade over 0.0988, z =
+// 10.1. A family whose betas never cross d - 1 (all above at 90 deg) gets no such row.
+TEST(PaperClaims, TheCrossingOfDMinusOneFallsWithTheAngleWithoutASigmoid) {
+  CampaignFits fits;
+  const std::vector<std::tuple<std::string, double, double, double>> points = {
+      {"Y", 90, 1e-2, 1.4}, {"Y", 90, 1e-1, 0.6}, {"Y", 30, 1e-3, 1.2}, {"Y", 30, 1e-2, 0.8},
+      {"Z", 90, 1e-2, 1.4}, {"Z", 90, 1e-1, 1.2}, {"Z", 30, 1e-3, 1.3}, {"Z", 30, 1e-2, 0.9}};
+  fits.series.reserve(points.size());
+  for (const auto& [family, theta, lambda, beta] : points) {
+    Series s = series(family, 2, lambda, beta, 0.05);
+    s.theta_left = s.theta_right = theta;
+    fits.series.push_back(s);
+  }
+  for (std::size_t i = 0; i < points.size(); i += 2) {
+    Crossover g = angle_group(std::get<0>(points[i]), fits.series[i]);
+    g.dimension = 2;
+    g.finite.push_back(&fits.series[i + 1]);
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const ClaimCheck* y = find(checks, "where beta crosses d - 1 (interpolated): lambda(theta_w) / lambda(90)", "Y at theta_w = 30");
+  ASSERT_NE(y, nullptr);
+  EXPECT_NEAR(y->measured, 0.1, 1e-12);
+  EXPECT_NEAR(y->sigma, 0.1 * std::log(10.0) * std::hypot(0.05 * std::hypot(0.625, 0.625), 0.05 * std::hypot(1.25, 1.25)), 1e-12);
+  EXPECT_EQ(y->verdict, "agrees (falls, z = 10.1)");
+  EXPECT_EQ(find(checks, "where beta crosses d - 1", "Z at theta_w = 30"), nullptr) << "Z at 90 deg never crosses 1";
+}
+
 TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees) {
   CampaignFits fits;
   // family A: 20 deg level with 30 (the paper's plateau); B: 20 deg well below 30; C: no 30 deg

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "reports/crossover_groups.h"
@@ -53,28 +54,58 @@ bool inside_measured(const CrossoverFit& fit, const Crossover& g) {
 }
 
 /// Where beta(lambda) crosses d - 1, the paper's sigmoid's midpoint by construction, without a
-/// sigmoid: log10 lambda interpolated linearly between the two measured lambdas (determined free
-/// fits) that bracket the crossing, the first such pair from below, and its sigma from the two
-/// exponents' errors. Nothing when the measured exponents never cross d - 1.
+/// sigmoid: log10 lambda interpolated linearly between the two measured lambdas that bracket the
+/// crossing (the first such pair from below), its sigma from the two exponents' errors, and its
+/// run-to-run spread: the sample standard deviation of each replica's own crossing (from the
+/// replicas' own fits of the series that have them; NaN below two replicas that cross).
 struct MidpointCrossing {
   double log10_lambda = 0, sigma = 0, lambda_lo = 0, lambda_hi = 0;
+  double spread = NAN;
+  int replicas = 0;  ///< replicas whose own exponents cross d - 1
 };
-std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g) {
-  std::vector<const Series*> points;
+
+/// The crossing of `level` by the exponents `fit_of` gives (nullptr: the series is left out).
+template <class FitOf>
+std::optional<MidpointCrossing> crossing_of(const Crossover& g, double level, FitOf fit_of) {
+  std::vector<std::pair<double, const BeverlooFit*>> points;  // (lambda, fit)
   for (const Series* s : g.finite)
-    if (s->fit && fit_quality(*s) == "ok" && s->lambda > 0) points.push_back(s);
-  std::sort(points.begin(), points.end(), [](const Series* a, const Series* b) { return a->lambda < b->lambda; });
-  const double level = g.dimension - 1.0;
+    if (const BeverlooFit* f = fit_of(*s); f && s->lambda > 0) points.emplace_back(s->lambda, f);
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-    const double b1 = points[i]->fit->beta, b2 = points[i + 1]->fit->beta;
+    const double b1 = points[i].second->beta, b2 = points[i + 1].second->beta;
     if ((b1 - level) * (b2 - level) > 0 || b1 == b2) continue;
-    const double x1 = std::log10(points[i]->lambda), x2 = std::log10(points[i + 1]->lambda);
+    const double x1 = std::log10(points[i].first), x2 = std::log10(points[i + 1].first);
     const double f = (b1 - level) / (b1 - b2);
     const double d1 = (x2 - x1) * (level - b2) / ((b1 - b2) * (b1 - b2)), d2 = (x2 - x1) * (b1 - level) / ((b1 - b2) * (b1 - b2));
-    return MidpointCrossing{x1 + f * (x2 - x1), std::hypot(d1 * points[i]->fit->beta_err, d2 * points[i + 1]->fit->beta_err),
-                            points[i]->lambda, points[i + 1]->lambda};
+    MidpointCrossing m;
+    m.log10_lambda = x1 + f * (x2 - x1);
+    m.sigma = std::hypot(d1 * points[i].second->beta_err, d2 * points[i + 1].second->beta_err);
+    m.lambda_lo = points[i].first, m.lambda_hi = points[i + 1].first;
+    return m;
   }
   return std::nullopt;
+}
+
+std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g) {
+  const double level = g.dimension - 1.0;
+  std::optional<MidpointCrossing> pooled = crossing_of(g, level, [](const Series& s) -> const BeverlooFit* {
+    return s.fit && fit_quality(s) == "ok" ? &*s.fit : nullptr;
+  });
+  if (!pooled) return pooled;
+  std::set<int> replicas;
+  for (const Series* s : g.finite)
+    for (const auto& [replica, fit] : s->replica_fit) replicas.insert(replica);
+  std::vector<double> own;
+  for (const int replica : replicas) {
+    const auto m = crossing_of(g, level, [replica](const Series& s) -> const BeverlooFit* {
+      const auto it = s.replica_fit.find(replica);
+      return it == s.replica_fit.end() ? nullptr : &it->second;
+    });
+    if (m) own.push_back(m->log10_lambda);
+  }
+  pooled->replicas = static_cast<int>(own.size());
+  pooled->spread = sample_sd(own);
+  return pooled;
 }
 
 /// lambda_c against the paper's value on the scale it is fitted and drawn on (log10 lambda_c,
@@ -238,7 +269,10 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
                           "lambda(90)";
       c.subject = g.label + " at theta_w = " + format_value(theta, 3);
       c.paper = plateau ? "~1 (a plateau)" : theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
-      const double log_ratio = at->log10_lambda - at_ref->log10_lambda, log_sigma = std::hypot(at->sigma, at_ref->sigma);
+      // each side's sigma: the larger of its exponents' error and its replicas' spread
+      auto side_sigma = [](const MidpointCrossing& m) { return std::isnan(m.spread) ? m.sigma : std::max(m.sigma, m.spread); };
+      const double log_ratio = at->log10_lambda - at_ref->log10_lambda,
+                   log_sigma = std::hypot(side_sigma(*at), side_sigma(*at_ref));
       c.measured = std::pow(10.0, log_ratio);
       c.sigma = c.measured * std::log(10.0) * log_sigma;
       auto crossing_text = [](const MidpointCrossing& m) {
@@ -246,8 +280,16 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
                format_value(m.lambda_hi, 2) + ")";
       };
       c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (" + crossing_text(*at) + " against " +
-                        crossing_text(*at_ref) + " at " + format_value(reference, 3) +
-                        " deg; sigma from the exponents' errors, not the interpolation's)";
+                        crossing_text(*at_ref) + " at " + format_value(reference, 3) + " deg";
+      if (!std::isnan(at->spread) || !std::isnan(at_ref->spread)) {
+        auto spread_text = [](const MidpointCrossing& m) {
+          return std::isnan(m.spread) ? std::string("none")
+                                      : format_value(m.spread, 2) + " over " + std::to_string(m.replicas) + " replicas";
+        };
+        c.measured_text += "; spread of log10 lambda " + spread_text(*at) + " and " + spread_text(*at_ref) + " at " +
+                           format_value(reference, 3) + " deg";
+      }
+      c.measured_text += "; sigma from the exponents' errors or the replicas' spread, not the interpolation's)";
       if (!(log_sigma > 0))
         c.verdict = "not judged: no error";
       else if (plateau)

@@ -471,8 +471,23 @@ TEST(PaperClaims, TheCrossingOfDMinusOneFallsWithTheAngleWithoutASigmoid) {
   const ClaimCheck* y = find(checks, "where beta crosses d - 1 (interpolated): lambda(theta_w) / lambda(90)", "Y at theta_w = 30");
   ASSERT_NE(y, nullptr);
   EXPECT_NEAR(y->measured, 0.1, 1e-12);
-  EXPECT_NEAR(y->sigma, 0.1 * std::log(10.0) * std::hypot(0.05 * std::hypot(0.625, 0.625), 0.05 * std::hypot(1.25, 1.25)), 1e-12);
+  const double sigma_90 = 0.05 * std::hypot(0.625, 0.625), sigma_30 = 0.05 * std::hypot(1.25, 1.25);
+  EXPECT_NEAR(y->sigma, 0.1 * std::log(10.0) * std::hypot(sigma_90, sigma_30), 1e-12);
   EXPECT_EQ(y->verdict, "agrees (falls, z = 10.1)");
+  // two replicas at 90 deg whose own crossings lie at 10^-1.5 and 10^-1.571 (1.3 at 1e-2): their
+  // spread, 0.0505, exceeds the exponents' 0.0442 and becomes that side's sigma
+  BeverlooFit r;
+  r.beta_err = 0.05;
+  r.beta = 1.4, fits.series[0].replica_fit[0] = r;
+  r.beta = 1.3, fits.series[0].replica_fit[1] = r;
+  r.beta = 0.6, fits.series[1].replica_fit[0] = r, fits.series[1].replica_fit[1] = r;
+  const auto with_replicas = check_paper_claims(fits);
+  const ClaimCheck* yr = find(with_replicas, "where beta crosses d - 1 (interpolated): lambda(theta_w) / lambda(90)", "Y at theta_w = 30");
+  ASSERT_NE(yr, nullptr);
+  const double spread_90 = std::fabs(0.3 / 0.7 - 0.5) / std::sqrt(2.0);
+  EXPECT_NEAR(yr->sigma, 0.1 * std::log(10.0) * std::hypot(spread_90, sigma_30), 1e-12);
+  EXPECT_NE(yr->measured_text.find("spread of log10 lambda none and 0.051 over 2 replicas at 90 deg"), std::string::npos)
+      << yr->measured_text;
   EXPECT_EQ(find(checks, "where beta crosses d - 1", "Z at theta_w = 30"), nullptr) << "Z at 90 deg never crosses 1";
 }
 

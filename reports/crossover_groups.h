@@ -35,6 +35,19 @@ double log10_lambda_c_sigma_chi2_scaled(const CrossoverFit& fit, const Crossover
 /// "spread 0.15 in log10 over 3 replicas", or "" without a spread: how every table says it.
 std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread);
 
+/// Where beta(lambda) crosses d - 1, the paper's sigmoid's midpoint by construction, without a
+/// sigmoid: log10 lambda interpolated linearly between the two measured lambdas that bracket the
+/// crossing (the first such pair from below, determined free fits), its sigma from the two
+/// exponents' errors, and its run-to-run spread: the sample standard deviation of each replica's
+/// own crossing (from the replicas' own fits of the series that have them; NaN below two
+/// replicas that cross). Nothing when the measured exponents never cross d - 1.
+struct MidpointCrossing {
+  double log10_lambda = 0, sigma = 0, lambda_lo = 0, lambda_hi = 0;
+  double spread = NAN;
+  int replicas = 0;  ///< replicas whose own exponents cross d - 1
+};
+std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g);
+
 /// lambda_c as the paper's text states it for a hopper angle (2D: 5e-2 at 90 deg, 6e-3 at 20,
 /// the plateau ~5e-3 for theta_w <= 30, read at 30); nothing elsewhere (60 deg, 3D).
 std::optional<double> paper_lambda_c_at_angle(int dimension, double theta_w_deg);

@@ -53,61 +53,6 @@ bool inside_measured(const CrossoverFit& fit, const Crossover& g) {
   return fit.lambda_c >= lo && fit.lambda_c <= hi;
 }
 
-/// Where beta(lambda) crosses d - 1, the paper's sigmoid's midpoint by construction, without a
-/// sigmoid: log10 lambda interpolated linearly between the two measured lambdas that bracket the
-/// crossing (the first such pair from below), its sigma from the two exponents' errors, and its
-/// run-to-run spread: the sample standard deviation of each replica's own crossing (from the
-/// replicas' own fits of the series that have them; NaN below two replicas that cross).
-struct MidpointCrossing {
-  double log10_lambda = 0, sigma = 0, lambda_lo = 0, lambda_hi = 0;
-  double spread = NAN;
-  int replicas = 0;  ///< replicas whose own exponents cross d - 1
-};
-
-/// The crossing of `level` by the exponents `fit_of` gives (nullptr: the series is left out).
-template <class FitOf>
-std::optional<MidpointCrossing> crossing_of(const Crossover& g, double level, FitOf fit_of) {
-  std::vector<std::pair<double, const BeverlooFit*>> points;  // (lambda, fit)
-  for (const Series* s : g.finite)
-    if (const BeverlooFit* f = fit_of(*s); f && s->lambda > 0) points.emplace_back(s->lambda, f);
-  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-    const double b1 = points[i].second->beta, b2 = points[i + 1].second->beta;
-    if ((b1 - level) * (b2 - level) > 0 || b1 == b2) continue;
-    const double x1 = std::log10(points[i].first), x2 = std::log10(points[i + 1].first);
-    const double f = (b1 - level) / (b1 - b2);
-    const double d1 = (x2 - x1) * (level - b2) / ((b1 - b2) * (b1 - b2)), d2 = (x2 - x1) * (b1 - level) / ((b1 - b2) * (b1 - b2));
-    MidpointCrossing m;
-    m.log10_lambda = x1 + f * (x2 - x1);
-    m.sigma = std::hypot(d1 * points[i].second->beta_err, d2 * points[i + 1].second->beta_err);
-    m.lambda_lo = points[i].first, m.lambda_hi = points[i + 1].first;
-    return m;
-  }
-  return std::nullopt;
-}
-
-std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g) {
-  const double level = g.dimension - 1.0;
-  std::optional<MidpointCrossing> pooled = crossing_of(g, level, [](const Series& s) -> const BeverlooFit* {
-    return s.fit && fit_quality(s) == "ok" ? &*s.fit : nullptr;
-  });
-  if (!pooled) return pooled;
-  std::set<int> replicas;
-  for (const Series* s : g.finite)
-    for (const auto& [replica, fit] : s->replica_fit) replicas.insert(replica);
-  std::vector<double> own;
-  for (const int replica : replicas) {
-    const auto m = crossing_of(g, level, [replica](const Series& s) -> const BeverlooFit* {
-      const auto it = s.replica_fit.find(replica);
-      return it == s.replica_fit.end() ? nullptr : &it->second;
-    });
-    if (m) own.push_back(m->log10_lambda);
-  }
-  pooled->replicas = static_cast<int>(own.size());
-  pooled->spread = sample_sd(own);
-  return pooled;
-}
-
 /// lambda_c against the paper's value on the scale it is fitted and drawn on (log10 lambda_c,
 /// with its own error): a linear z would call a lambda_c of 15 +- 8 "2 sigma from 0.07". A
 /// midpoint outside the group's measured lambdas is an extrapolation of the sigmoid (with the

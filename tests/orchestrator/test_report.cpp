@@ -296,6 +296,36 @@ TEST(Report, VelocityRegimesShowTheOrificeExponentsAndTheLambdaNearestTheDatasCr
   fs::remove_all(dir);
 }
 
+// Fig. 6's panel a also draws, without a sigmoid, where each angle's measured beta(lambda)
+// crosses d - 1: for exponents on Eq. 2 that is lambda_c itself (0.05 at 90 deg, 0.005 at 30),
+// here interpolated over a grid of half a decade (within 0.01 in log10).
+TEST(Report, LambdaCVersusThetaDrawsWhereBetaCrossesDMinusOne) {
+  const json sweep = {{"name", "crossing"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"theta_w_deg", {90, 30}}},
+                                              {{"union", {{{"lambda", {0, "inf"}}}, {{"lambda", {{"logspace", {-4, 1, 11}}}}}}}},
+                                              {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double mu = j["mu"], lambda = mu > 0 ? j["zeta"].get<double>() / mu : INFINITY;
+    const double lambda_c = j["theta_w_left_deg"].get<double>() == 90 ? 0.05 : 0.005;
+    const double beta = lambda == 0 ? 1.5 : std::isinf(lambda) ? 0.5 : crossover_model(2, lambda, lambda_c, 0.8);
+    const double Q = beverloo_model(j["w"].get<double>(), 0.4, 1.0, beta);
+    return converged_summary(Q, 1e-3 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string theta = read(out / "lambda_c_vs_theta.dat");
+  const std::size_t crossing = theta.find("theta_w lambda_at_beta_d_minus_1 log10_sigma log10_replica_spread bar_low bar_high");
+  ASSERT_NE(crossing, std::string::npos) << theta;
+  for (const auto& [row, lambda_c] : {std::pair{"\n30 ", 0.005}, std::pair{"\n90 ", 0.05}}) {
+    const std::size_t at = theta.find(row, crossing);
+    ASSERT_NE(at, std::string::npos) << row << " in\n" << theta;
+    EXPECT_LT(std::fabs(std::log10(std::stod(theta.substr(at + 4)) / lambda_c)), 0.01) << theta.substr(at, 40);
+  }
+  EXPECT_NE(read(out / "lambda_c_vs_theta.gp").find("where beta crosses d - 1"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(Report, AFlowRateWithoutAUsableErrorIsLeftOutNotPooledAsZero) {
   const json sweep = {{"name", "errs"}, {"base", {{"N", 400}, {"W", 25}, {"zeta", 0.3}, {"mu", 0}}},
                       {"sweep", {{"w", {4, 5, 6, 7, 8}}}}};

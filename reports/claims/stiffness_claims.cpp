@@ -299,6 +299,15 @@ void rigid_limit_model_checks(const CampaignFits& fits, std::vector<ClaimCheck>&
   }
 }
 
+namespace {
+/// A limit series' fit with beta held as the paper fits it (3/2 friction only, 1/2 drag only),
+/// when its C and C's error are usable; else nullptr.
+const BeverlooFit* held(const Series& s) {
+  const std::optional<BeverlooFit>& h = s.lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo;
+  return h && h->C > 0 && h->C_err > 0 ? &*h : nullptr;
+}
+}  // namespace
+
 /// "C ~ 0.15 with friction only and ~0.45 with drag only, nearly independent of softness" (Fig.
 /// 7a; "for all stiffnesses"): per group of SP limit series (2D, theta_w = 90) that differ only
 /// in E_sp (Series::stiffness_free_key), C with beta held as the paper fits it (Cs of different
@@ -306,10 +315,6 @@ void rigid_limit_model_checks(const CampaignFits& fits, std::vector<ClaimCheck>&
 /// in log C; sigma from both held fits (the larger of each one's error and its replicas' spread
 /// of ln C). The text gives the held C at every stiffness of the group.
 void prefactor_softness_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
-  auto held = [](const Series& s) -> const BeverlooFit* {
-    const std::optional<BeverlooFit>& h = s.lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo;
-    return h && h->C > 0 && h->C_err > 0 ? &*h : nullptr;
-  };
   std::vector<std::string> order;  // groups in the order of their first series
   std::map<std::string, std::vector<const Series*>> groups;
   for (const Series& s : fits.series) {
@@ -329,8 +334,7 @@ void prefactor_softness_checks(const CampaignFits& fits, std::vector<ClaimCheck>
     const bool friction = soft.lambda == 0;
     const double log_ratio = std::log(held(stiff)->C / held(soft)->C);
     const double log_sigma =
-        std::hypot(held_C_rel_sigma(*held(stiff), friction ? stiff.log_C_at_beta_hi_replica_spread : stiff.log_C_at_beta_lo_replica_spread),
-                   held_C_rel_sigma(*held(soft), friction ? soft.log_C_at_beta_hi_replica_spread : soft.log_C_at_beta_lo_replica_spread));
+        std::hypot(HeatmapLimit{!friction}.C_rel_sigma(stiff), HeatmapLimit{!friction}.C_rel_sigma(soft));
     ClaimCheck c;
     c.claim = std::string("prefactor C nearly independent of softness (Fig. 7a), ") +
               (friction ? "friction only, beta held at 3/2" : "drag only, beta held at 1/2") +
@@ -361,10 +365,6 @@ void prefactor_growth_checks(const CampaignFits& fits, std::vector<ClaimCheck>& 
   struct Growth {
     const Series *lo = nullptr, *hi = nullptr;
     double log_ratio = 0, sigma = 0;  // of C(hi) / C(lo), in log
-  };
-  auto held = [](const Series& s) -> const BeverlooFit* {
-    const std::optional<BeverlooFit>& h = s.lambda == 0 ? s.authors_fixed_hi : s.authors_fixed_lo;
-    return h && h->C > 0 && h->C_err > 0 ? &*h : nullptr;
   };
   auto rel_sigma = [](const Series& s) { return HeatmapLimit{s.lambda != 0}.C_rel_sigma(s); };
   auto growth = [&](const Series& lo, const Series& hi) {

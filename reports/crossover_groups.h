@@ -4,6 +4,7 @@
 /// and lambda = inf limits, fitted with the paper's fixed plateaus and with free ones. Two
 /// lambda axes: the text's (zeta and mu at a fixed dissipation scale) and the authors' (drag as
 /// a rate times the mass, both of their branches in one group).
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -45,6 +46,8 @@ struct MidpointCrossing {
   double log10_lambda = 0, sigma = 0, lambda_lo = 0, lambda_hi = 0;
   double spread = NAN;
   int replicas = 0;  ///< replicas whose own exponents cross d - 1
+  /// The sigma of log10 lambda that verdicts and bars use: the larger of sigma and the spread.
+  double verdict_sigma() const { return std::isnan(spread) ? sigma : std::max(sigma, spread); }
 };
 std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g);
 

@@ -153,6 +153,18 @@ void crossover_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
 /// theta_w <= 30"), checked as lambda_c(theta_w) / lambda_c(30): it agrees within
 /// kClaimAgreeSigmas sigma of 1 and differs, falling or rising, beyond.
 void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
+  auto paper_text = [](double theta, bool plateau) -> std::string {
+    return plateau ? "~1 (a plateau)" : theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
+  };
+  // the ratio's verdict in log10: a plateau is no change, else the claimed fall
+  auto judge_ratio = [](ClaimCheck& c, double log_ratio, double log_sigma, bool plateau) {
+    if (!(log_sigma > 0))
+      c.verdict = "not judged: no error";
+    else if (plateau)
+      judge_no_change(c, log_ratio / log_sigma);
+    else
+      judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
+  };
   for (const auto& [family, by_theta] : angle_families(fits.crossovers, /*fitted_only=*/false)) {
     auto compare = [&](double theta, const Crossover& g, double reference, bool plateau) {
       const auto ref = by_theta.find(reference);
@@ -170,7 +182,7 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
                                 ": lambda_c(theta_w) / lambda_c(30)"
                           : "lambda_c falls as theta_w falls (Fig. 6), " + fit_name + ": lambda_c(theta_w) / lambda_c(90)";
         c.subject = g.label + " at theta_w = " + format_value(theta, 3);
-        c.paper = plateau ? "~1 (a plateau)" : theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
+        c.paper = paper_text(theta, plateau);
         const double log_ratio = at->log10_lambda_c - at_ref->log10_lambda_c;
         const double log_sigma =
             std::hypot(log10_lambda_c_sigma(*at, spread), log10_lambda_c_sigma(*at_ref, spread_ref));
@@ -192,13 +204,7 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
           out.push_back(c);
           continue;
         }
-        if (!(log_sigma > 0)) {
-          c.verdict = "not judged: no error";
-        } else if (plateau) {
-          judge_no_change(c, log_ratio / log_sigma);
-        } else {
-          judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
-        }
+        judge_ratio(c, log_ratio, log_sigma, plateau);
         const double log_sigma_scaled = std::hypot(log10_lambda_c_sigma_chi2_scaled(*at, spread),
                                                    log10_lambda_c_sigma_chi2_scaled(*at_ref, spread_ref));
         append_chi2_scaled_z(c, log_ratio / log_sigma_scaled, {chi2_scale(*at), chi2_scale(*at_ref)});
@@ -213,11 +219,9 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
                         : "lambda_c falls as theta_w falls (Fig. 6), where beta crosses d - 1 (interpolated): lambda(theta_w) / "
                           "lambda(90)";
       c.subject = g.label + " at theta_w = " + format_value(theta, 3);
-      c.paper = plateau ? "~1 (a plateau)" : theta == 20 ? "~0.12 (6e-3 / 5e-2)" : "< 1 (5e-2 at 90 deg, 6e-3 at 20)";
-      // each side's sigma: the larger of its exponents' error and its replicas' spread
-      auto side_sigma = [](const MidpointCrossing& m) { return std::isnan(m.spread) ? m.sigma : std::max(m.sigma, m.spread); };
+      c.paper = paper_text(theta, plateau);
       const double log_ratio = at->log10_lambda - at_ref->log10_lambda,
-                   log_sigma = std::hypot(side_sigma(*at), side_sigma(*at_ref));
+                   log_sigma = std::hypot(at->verdict_sigma(), at_ref->verdict_sigma());
       c.measured = std::pow(10.0, log_ratio);
       c.sigma = c.measured * std::log(10.0) * log_sigma;
       auto crossing_text = [](const MidpointCrossing& m) {
@@ -235,12 +239,7 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
                            format_value(reference, 3) + " deg";
       }
       c.measured_text += "; sigma from the exponents' errors or the replicas' spread, not the interpolation's)";
-      if (!(log_sigma > 0))
-        c.verdict = "not judged: no error";
-      else if (plateau)
-        judge_no_change(c, log_ratio / log_sigma);
-      else
-        judge_direction(c, -log_ratio / log_sigma, "falls", "rises");
+      judge_ratio(c, log_ratio, log_sigma, plateau);
       out.push_back(c);
     };
     for (const auto& [theta, g] : by_theta)

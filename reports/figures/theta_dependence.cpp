@@ -142,7 +142,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
           const int crossing_block =
               f.begin_block(name + ": theta_w lambda_at_beta_d_minus_1 log10_sigma log10_replica_spread bar_low bar_high");
           for (const auto& [theta, m] : crossings) {
-            const double sigma = std::isnan(m.spread) ? m.sigma : std::max(m.sigma, m.spread);
+            const double sigma = m.verdict_sigma();
             f.data << num(theta) << " " << num(std::pow(10.0, m.log10_lambda)) << " " << num(m.sigma) << " " << num(m.spread)
                    << " " << num(std::pow(10.0, m.log10_lambda - sigma)) << " " << num(std::pow(10.0, m.log10_lambda + sigma))
                    << "\n";

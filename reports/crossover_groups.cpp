@@ -347,6 +347,29 @@ std::map<std::string, std::map<double, const Crossover*>> angle_families(const s
 
 namespace {
 
+/// Where the parabola through (x[0], b[0]), (x[1], b[1]), (x[2], b[2]) takes `level` between
+/// lo and hi, where it changes sign (it is the data there). Bisection: a closed form would lose
+/// its digits when the parabola is nearly a line, the usual case.
+double parabola_crossing(const double (&x)[3], const double (&b)[3], double level, double lo, double hi) {
+  auto p = [&](double t) {
+    double sum = 0;
+    for (int i = 0; i < 3; ++i) {
+      double term = b[i];
+      for (int j = 0; j < 3; ++j)
+        if (j != i) term *= (t - x[j]) / (x[i] - x[j]);
+      sum += term;
+    }
+    return sum - level;
+  };
+  double p_lo = p(lo);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double mid = 0.5 * (lo + hi), p_mid = p(mid);
+    if ((p_mid > 0) == (p_lo > 0)) lo = mid, p_lo = p_mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 /// The crossing of `level` by the exponents `fit_of` gives (nullptr: the series is left out).
 template <class FitOf>
 std::optional<MidpointCrossing> crossing_of(const Crossover& g, double level, FitOf fit_of) {
@@ -364,6 +387,16 @@ std::optional<MidpointCrossing> crossing_of(const Crossover& g, double level, Fi
     m.log10_lambda = x1 + f * (x2 - x1);
     m.sigma = std::hypot(d1 * points[i].second->beta_err, d2 * points[i + 1].second->beta_err);
     m.lambda_lo = points[i].first, m.lambda_hi = points[i + 1].first;
+    // the parabolas through the pair and the point below it, and the point above it
+    std::vector<std::size_t> firsts;
+    if (i >= 1) firsts.push_back(i - 1);
+    if (i + 2 < points.size()) firsts.push_back(i);
+    for (const std::size_t first : firsts) {
+      double x[3], b[3];
+      for (int j = 0; j < 3; ++j) x[j] = std::log10(points[first + j].first), b[j] = points[first + j].second->beta;
+      const double moved = std::fabs(parabola_crossing(x, b, level, x1, x2) - m.log10_lambda);
+      m.interpolation = std::isnan(m.interpolation) ? moved : std::max(m.interpolation, moved);
+    }
     return m;
   }
   return std::nullopt;

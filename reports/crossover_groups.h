@@ -41,13 +41,22 @@ std::string lambda_c_spread_phrase(const Crossover::ReplicaSpread& spread);
 /// crossing (the first such pair from below, determined free fits), its sigma from the two
 /// exponents' errors, and its run-to-run spread: the sample standard deviation of each replica's
 /// own crossing (from the replicas' own fits of the series that have them; NaN below two
-/// replicas that cross). Nothing when the measured exponents never cross d - 1.
+/// replicas that cross), and the interpolation's own error: how far the crossing moves when
+/// beta(log10 lambda) is the parabola through the bracketing pair and one neighbour instead of
+/// their chord (the larger of the one or two parabolas the neighbours give; NaN without a
+/// neighbour). That is the next term of the interpolation, the one a finer lambda grid shrinks
+/// (as the square of the step where beta is smooth). Nothing when the exponents never cross d - 1.
 struct MidpointCrossing {
   double log10_lambda = 0, sigma = 0, lambda_lo = 0, lambda_hi = 0;
   double spread = NAN;
+  double interpolation = NAN;
   int replicas = 0;  ///< replicas whose own exponents cross d - 1
-  /// The sigma of log10 lambda that verdicts and bars use: the larger of sigma and the spread.
-  double verdict_sigma() const { return std::isnan(spread) ? sigma : std::max(sigma, spread); }
+  /// The sigma of log10 lambda that verdicts and bars use: the larger of sigma and the spread
+  /// (both the scatter of the exponents), with the interpolation's error added in quadrature.
+  double verdict_sigma() const {
+    const double scatter = std::isnan(spread) ? sigma : std::max(sigma, spread);
+    return std::isnan(interpolation) ? scatter : std::hypot(scatter, interpolation);
+  }
 };
 std::optional<MidpointCrossing> crossing_of_d_minus_1(const Crossover& g);
 

@@ -238,7 +238,13 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
         c.measured_text += "; spread of log10 lambda " + spread_text(*at) + " and " + spread_text(*at_ref) + " at " +
                            format_value(reference, 3) + " deg";
       }
-      c.measured_text += "; sigma from the exponents' errors or the replicas' spread, not the interpolation's)";
+      auto interpolation_text = [](const MidpointCrossing& m) {
+        return std::isnan(m.interpolation) ? std::string("none (no neighbouring lambda)")
+                                           : format_value(m.interpolation, 2);
+      };
+      c.measured_text += "; sigma from the exponents' errors or the replicas' spread, and in quadrature the "
+                         "interpolation's, where a parabola through a neighbouring lambda moves the crossing: " +
+                         interpolation_text(*at) + " and " + interpolation_text(*at_ref) + " decades)";
       judge_ratio(c, log_ratio, log_sigma, plateau);
       out.push_back(c);
     };

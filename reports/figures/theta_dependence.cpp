@@ -134,18 +134,20 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                    << " using 1:2:5:6 with yerrorlines dt 2 " << style.substr(0, style.find(" pt")) << " pt 4 title "
                    << legend(name, "plateaus free");
         // without a sigmoid: where the measured beta crosses d - 1 (bars: the larger of the
-        // exponents' error and the replicas' spread, as the claims table judges it)
+        // exponents' error and the replicas' spread with the interpolation's in quadrature, as
+        // the claims table judges it)
         std::vector<std::pair<double, MidpointCrossing>> crossings;
         for (const auto& [theta, g] : family->fitted)
           if (const auto m = crossing_of_d_minus_1(*g)) crossings.emplace_back(theta, *m);
         if (crossings.size() >= 2) {
           const int crossing_block =
-              f.begin_block(name + ": theta_w lambda_at_beta_d_minus_1 log10_sigma log10_replica_spread bar_low bar_high");
+              f.begin_block(name + ": theta_w lambda_at_beta_d_minus_1 log10_sigma log10_replica_spread bar_low bar_high "
+                                   "log10_interpolation_error");
           for (const auto& [theta, m] : crossings) {
             const double sigma = m.verdict_sigma();
             f.data << num(theta) << " " << num(std::pow(10.0, m.log10_lambda)) << " " << num(m.sigma) << " " << num(m.spread)
                    << " " << num(std::pow(10.0, m.log10_lambda - sigma)) << " " << num(std::pow(10.0, m.log10_lambda + sigma))
-                   << "\n";
+                   << " " << num(m.interpolation) << "\n";
           }
           left_plots << ", \\\n     DATA index " << crossing_block << " using 1:2:5:6 with yerrorlines dt 3 "
                      << style.substr(0, style.find(" pt")) << " pt 8 title " << legend(name, "where beta crosses d - 1");

@@ -242,5 +242,57 @@ TEST(CrossoverFitOfAGroup, AKWithinTwoErrorsOfTheRangeIsABeverlooLawAndStaysIn) 
   EXPECT_EQ(fit_quality(odd), "not determined: k = -0.5 +- 0.2, outside [0, smallest w] by more than 2 errors");
 }
 
+/// One group whose exponents lie exactly on beta(x) at lambda = 10^(x_c + offset), x_c = log10 0.03.
+template <class Beta>
+Crossover crossing_group(std::vector<Series>& series, const std::vector<double>& offsets, Beta beta_of) {
+  const double x_c = std::log10(0.03);
+  series.clear();
+  for (const double dx : offsets) {
+    series.push_back(one_run_series(std::pow(10.0, x_c + dx), beta_of(dx)));
+    series.back().fit->beta = beta_of(dx), series.back().fit->beta_err = 0.05;
+  }
+  std::vector<Crossover> groups = crossover_groups(series, base_jobs(series));
+  EXPECT_EQ(groups.size(), 1u);
+  return groups.front();
+}
+
+TEST(MidpointCrossing, TheInterpolationsErrorIsWhatAParabolaThroughANeighbourMovesTheChordsCrossing) {
+  const double x_c = std::log10(0.03);
+  // beta = 1 - 0.8 dx + 0.4 dx^2 crosses 1 at dx = 0; the chord between dx = -0.35 and 0.2
+  // crosses at dx = 0.55 * 0.329 / 0.473 = 0.0326, and either neighbour's parabola is beta itself
+  auto curved = [](double dx) { return 1 - 0.8 * dx + 0.4 * dx * dx; };
+  std::vector<Series> series;
+  const Crossover g = crossing_group(series, {-0.9, -0.35, 0.2, 0.75}, curved);
+  const auto m = crossing_of_d_minus_1(g);
+  ASSERT_TRUE(m);
+  const double chord_error = m->log10_lambda - x_c;
+  EXPECT_NEAR(chord_error, 0.55 * 0.329 / 0.473 - 0.35, 1e-9);
+  EXPECT_NEAR(m->interpolation, chord_error, 1e-9) << "a parabola through three points of a parabola is exact";
+  EXPECT_NEAR(m->verdict_sigma(), std::hypot(m->sigma, chord_error), 1e-12);
+  // a grid of half the step: the chord's error, and the estimate with it, a quarter
+  const Crossover fine = crossing_group(series, {-0.45, -0.175, 0.1, 0.375}, curved);
+  const auto m_fine = crossing_of_d_minus_1(fine);
+  ASSERT_TRUE(m_fine);
+  EXPECT_NEAR(m_fine->interpolation, m_fine->log10_lambda - x_c, 1e-9);
+  EXPECT_NEAR(m_fine->interpolation / m->interpolation, 0.25, 0.03);
+  // a straight beta(log10 lambda): the chord is right and the estimate nothing
+  const Crossover straight = crossing_group(series, {-0.9, -0.35, 0.2, 0.75}, [](double dx) { return 1 - 0.8 * dx; });
+  const auto m_straight = crossing_of_d_minus_1(straight);
+  ASSERT_TRUE(m_straight);
+  EXPECT_NEAR(m_straight->log10_lambda, x_c, 1e-12);
+  EXPECT_LT(m_straight->interpolation, 1e-12);
+  // the bracketing pair alone: nothing to estimate it with, and the verdict's sigma is the scatter's
+  const Crossover pair = crossing_group(series, {-0.35, 0.2}, curved);
+  const auto m_pair = crossing_of_d_minus_1(pair);
+  ASSERT_TRUE(m_pair);
+  EXPECT_TRUE(std::isnan(m_pair->interpolation));
+  EXPECT_DOUBLE_EQ(m_pair->verdict_sigma(), m_pair->sigma);
+  // a neighbour on one side only (the crossing in the first interval): its one parabola
+  const Crossover first = crossing_group(series, {-0.35, 0.2, 0.75}, curved);
+  const auto m_first = crossing_of_d_minus_1(first);
+  ASSERT_TRUE(m_first);
+  EXPECT_NEAR(m_first->interpolation, chord_error, 1e-9);
+}
+
 }  // namespace
 }  // namespace beverloo

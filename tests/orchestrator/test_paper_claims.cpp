@@ -846,6 +846,49 @@ Series dp_cell(double K_l, double K_b, double k_held, double k_err, double sprea
   return dp_cell_in_limit(false, K_l, K_b, k_held, k_err, spread);
 }
 
+TEST(PaperClaims, Fig7sPrefactorIsTheSameInEveryCellWhenTheCellsLogCAgreeWithTheirMean) {
+  // four drag-only cells, C held at beta = 1/2 with 2 % errors
+  auto cells = [](double odd_C, double odd_spread) {
+    CampaignFits fits;
+    const double C[] = {2.00, 2.04, 1.97, odd_C};
+    const double K[][2] = {{8.829, 0.002626}, {8.829, 26.26}, {8829, 0.002626}, {8829, 26.26}};
+    for (int i = 0; i < 4; ++i) {
+      fits.series.push_back(dp_cell(K[i][0], K[i][1], 2.0, 0.3));
+      fits.series.back().authors_fixed_lo->C = C[i], fits.series.back().authors_fixed_lo->C_err = 0.02 * C[i];
+    }
+    fits.series.back().log_C_at_beta_lo_replica_spread = odd_spread;
+    return fits;
+  };
+  const std::string claim = "Fig. 7c, drag only: C the same in every (K_l, K_b) cell";
+  // log C of 2.00, 2.04, 1.97, 2.02 about their mean: chi2 = 1.66 for 3 degrees of freedom
+  CampaignFits equal = cells(2.02, NAN);
+  const auto same = check_paper_claims(equal);
+  const ClaimCheck* c = find(same, claim, equal.series[1].label + " / " + equal.series[2].label);
+  ASSERT_NE(c, nullptr);
+  EXPECT_NEAR(c->measured, 2.04 / 1.97, 1e-12);
+  EXPECT_NEAR(c->sigma, c->measured * 0.02 * std::sqrt(2.0), 1e-12);
+  EXPECT_TRUE(c->agrees) << c->verdict;
+  EXPECT_EQ(c->verdict, "agrees (p = 0.64)");
+  EXPECT_NE(c->measured_text.find("chi2 1.66 for 3 degrees of freedom"), std::string::npos) << c->measured_text;
+  // one cell 25 % above the others, at 2 %: chi2 ~ 90, the cells differ
+  CampaignFits odd = cells(2.5, NAN);
+  const auto differ = check_paper_claims(odd);
+  const ClaimCheck* d = find(differ, claim, odd.series[3].label + " / " + odd.series[2].label);
+  ASSERT_NE(d, nullptr);
+  EXPECT_TRUE(d->judged);
+  EXPECT_FALSE(d->agrees) << d->verdict;
+  // the same cell whose replicas spread ln C by 0.2: its sigma is the spread, and the cells agree
+  CampaignFits spread = cells(2.5, 0.2);
+  const auto with_spread = check_paper_claims(spread);
+  const ClaimCheck* s = find(with_spread, claim, spread.series[3].label + " / " + spread.series[2].label);
+  ASSERT_NE(s, nullptr);
+  EXPECT_TRUE(s->agrees) << s->verdict;
+  // a group of one cell has nothing to compare
+  CampaignFits one;
+  one.series.push_back(equal.series[0]);
+  EXPECT_TRUE(checks_about(check_paper_claims(one), claim).empty());
+}
+
 TEST(PaperClaims, Fig7cCornersAreCheckedWithTheHeldFitWhereTheGridSpansThePapersAxes) {
   CampaignFits fits;
   // the authors' labels 1 and 1e3 of K_l, 1e-2 and 1e2 of K_b in our units

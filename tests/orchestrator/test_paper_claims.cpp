@@ -491,6 +491,42 @@ TEST(PaperClaims, TheCrossingOfDMinusOneFallsWithTheAngleWithoutASigmoid) {
   EXPECT_EQ(find(checks, "where beta crosses d - 1", "Z at theta_w = 30"), nullptr) << "Z at 90 deg never crosses 1";
 }
 
+TEST(PaperClaims, LambdaCWithoutASigmoidIsWhereTheExponentsCrossDMinusOneAgainstThePapersValue) {
+  CampaignFits fits;
+  // family P crosses 1 at 10^-1.5 = 0.0316 (1.4 at 1e-2, 0.6 at 0.1), Q at 0.05 itself (1.4 at
+  // 0.01, 0.6 at 0.25: log10 0.05 lies at the chord's fraction 0.5)
+  const std::vector<std::tuple<std::string, double, double>> points = {
+      {"P", 1e-2, 1.4}, {"P", 1e-1, 0.6}, {"Q", 1e-2, 1.4}, {"Q", 0.25, 0.6}};
+  fits.series.reserve(points.size());
+  for (const auto& [family, lambda, beta] : points) {
+    Series s = series(family, 2, lambda, beta, 0.05);
+    s.theta_left = s.theta_right = 90;
+    fits.series.push_back(s);
+  }
+  for (std::size_t i = 0; i < points.size(); i += 2) {
+    Crossover g = angle_group(std::get<0>(points[i]), fits.series[i]);
+    g.dimension = 2;
+    g.finite.push_back(&fits.series[i + 1]);
+    fits.crossovers.push_back(g);
+  }
+  const auto checks = check_paper_claims(fits);
+  const std::string claim = "lambda_c of beta(lambda) (Fig. 4, 6), where beverloo's exponents (not rescaled) cross d - 1";
+  const ClaimCheck* p = find(checks, claim, "P");
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->paper, "~0.05 (2D, theta_w = 90)");
+  EXPECT_NEAR(p->measured, std::pow(10.0, -1.5), 1e-12);
+  const double sigma = 0.05 * std::hypot(0.625, 0.625);  // log10, from the two exponents' errors
+  EXPECT_NEAR(p->sigma, p->measured * std::log(10.0) * sigma, 1e-12);
+  EXPECT_EQ(p->verdict, "differs (z = 4.5 in log10 lambda)");  // log10(0.0316 / 0.05) = -0.199
+  EXPECT_NE(p->measured_text.find("the replicas' spread none, the interpolation's none (no neighbouring lambda)"),
+            std::string::npos)
+      << p->measured_text;
+  const ClaimCheck* q = find(checks, claim, "Q");
+  ASSERT_NE(q, nullptr);
+  EXPECT_NEAR(q->measured, 0.05, 1e-12);
+  EXPECT_EQ(q->verdict, "agrees (z = 0.0 in log10 lambda)");
+}
+
 TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees) {
   CampaignFits fits;
   // family A: 20 deg level with 30 (the paper's plateau); B: 20 deg well below 30; C: no 30 deg

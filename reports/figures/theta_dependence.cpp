@@ -20,6 +20,7 @@
 #include "core/text_escape.h"
 #include "figure.h"
 #include "reports/crossover_groups.h"
+#include "reports/number_format.h"
 #include "reports/series_fits.h"
 
 namespace beverloo::figures {
@@ -41,6 +42,22 @@ double lambda_key(double lambda) {
   std::snprintf(buf, sizeof buf, "%.6g", lambda);
   return std::strtod(buf, nullptr);
 }
+
+/// The frame of the lambda_c panel, in log10 lambda: every drawn value, and the bars of those
+/// known to kFrameDecades or better. A wider bar is cut at the frame and counted: the text set's
+/// Fig. 6 has a free-plateau lambda_c at 30 deg whose replicas spread it over 2.5 decades, and
+/// its bar squeezed every other lambda_c into a third of the panel.
+constexpr double kFrameDecades = 1.0, kFrameMarginDecades = 0.25;
+struct LogFrame {
+  double lo = INFINITY, hi = -INFINITY;
+  int cut = 0;
+  void add(double value, double log10_sigma) {
+    if (!(value > 0)) return;
+    const double x = std::log10(value), bar = std::isfinite(log10_sigma) && log10_sigma <= kFrameDecades ? log10_sigma : 0;
+    lo = std::min(lo, x - bar), hi = std::max(hi, x + bar);
+    cut += std::isfinite(log10_sigma) && log10_sigma > kFrameDecades;
+  }
+};
 
 }  // namespace
 
@@ -100,6 +117,8 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
     // the paper's values: 5e-2 at 90 deg, ~6e-3 at 20 deg, a plateau ~5e-3 below 30 deg
     const int paper = f.begin_block("the paper: theta_w lambda_c");
     f.data << "90 0.05\n20 0.006\n";
+    LogFrame frame;
+    for (const double value : {0.05, 0.006, 0.005}) frame.add(value, 0);
     const int plateau = f.begin_block("the paper's plateau: theta_w lambda_c");
     f.data << "0 0.005\n30 0.005\n";
     third << "set title 'Fig. 6a at one lambda: beta (grey: the paper)' noenhanced font ',9'\n"
@@ -118,6 +137,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
         // log10 lambda_c and its spread over the replicas' own fits (as the claims table judges it)
         auto row = [&](double theta, const CrossoverFit& fit, const Crossover::ReplicaSpread& spread) {
           const double sigma = log10_lambda_c_sigma(fit, spread);
+          frame.add(fit.lambda_c, sigma);
           f.data << num(theta) << " " << num(fit.lambda_c) << " " << num(fit.lambda_c_err) << " "
                  << num(spread.log10_lambda_c) << " " << num(fit.lambda_c * std::pow(10.0, -sigma)) << " "
                  << num(fit.lambda_c * std::pow(10.0, sigma)) << "\n";
@@ -145,6 +165,7 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                                    "log10_interpolation_error");
           for (const auto& [theta, m] : crossings) {
             const double sigma = m.verdict_sigma();
+            frame.add(std::pow(10.0, m.log10_lambda), sigma);
             f.data << num(theta) << " " << num(std::pow(10.0, m.log10_lambda)) << " " << num(m.sigma) << " " << num(m.spread)
                    << " " << num(std::pow(10.0, m.log10_lambda - sigma)) << " " << num(std::pow(10.0, m.log10_lambda + sigma))
                    << " " << num(m.interpolation) << "\n";
@@ -206,9 +227,20 @@ ReportFigure lambda_c_vs_theta(const FigureContext& c) {
                     << legend(name, "lambda = " + num(lambda));
       }
     }
+    // a frame only where a bar is cut (otherwise gnuplot's own range holds every bar), undone
+    // after the panel so that the next panels scale themselves
+    std::string undo_frame;
+    if (frame.cut > 0) {
+      left << "set yrange [" << num(std::pow(10.0, frame.lo - kFrameMarginDecades)) << ":"
+           << num(std::pow(10.0, frame.hi + kFrameMarginDecades)) << "]\nset label 1 "
+           << gnuplot_string(std::to_string(frame.cut) + (frame.cut == 1 ? " bar" : " bars") + " wider than " +
+                             format_value(kFrameDecades, 2) + " decade cut at the frame (the .dat has them)")
+           << " at graph 0.02, graph 0.04 font ',8' noenhanced\n";
+      undo_frame = "\nunset label 1\nset autoscale y";
+    }
     left << "plot DATA index " << paper << " using 1:2 with points pt 6 ps 2 lc rgb 'gray50' title 'paper: 5e-2 (90), 6e-3 (20)', \\\n"
          << "     DATA index " << plateau << " using 1:2 with lines " << kPaperLineStyle << " title 'paper: plateau ~5e-3'"
-         << left_plots.str();
+         << left_plots.str() << undo_frame;
     std::ostringstream body;
     // panel a where a family has lambda_c at two angles, b where it has force ratios (or, beside
     // a, a line that says why not), c where it has beta at one lambda at two angles

@@ -654,6 +654,51 @@ TEST(Report, LambdaCBarsOfFig6TakeTheReplicasSpreadWhenItIsTheLarger) {
     EXPECT_NEAR(std::log10(high / lambda_c), spread, 1e-9) << line;
     EXPECT_NEAR(std::log10(lambda_c / low), spread, 1e-9) << line;
   }
+  EXPECT_EQ(read(out / "lambda_c_vs_theta.gp").find("set yrange"), std::string::npos)
+      << "bars of 0.21 decades need no frame of their own";
+  fs::remove_all(dir);
+}
+
+TEST(Report, LambdaCPanelCutsABarWiderThanADecadeAtItsFrameAndSaysSo) {
+  // at 60 deg two replicas with lambda_c = 1e-3 and 0.1: their spread, 1.41 decades, is the bar
+  // of 60 deg's lambda_c; 90 deg's replicas agree (0.05)
+  const json sweep = {{"name", "wide bar"},
+                      {"base", {{"N", 400}, {"W", 25}}},
+                      {"sweep", {{"product", {{{"replica", {0, 1}}}, {{"theta_w_deg", {90, 60}}},
+                                              {{"lambda", {1e-4, 1e-3, 1e-2, 3e-2, 0.1, 1, 10}}}, {{"w", {4, 5, 6, 7, 8}}}}}}}};
+  const fs::path dir = campaign_of(sweep, [](const json& j) {
+    const double zeta = j["zeta"], mu = j["mu"], w = j["w"];
+    const bool wide = j["theta_w_left_deg"].get<double>() == 60;
+    const double lambda_c = wide ? (j["replica"].get<int>() == 0 ? 1e-3 : 0.1) : 0.05;
+    const double Q = beverloo_model(w, 0.4, 1.0, crossover_model(2, zeta / mu, lambda_c, 0.8));
+    return converged_summary(Q, 0.01 * Q);
+  });
+  const fs::path out = dir / "report";
+  write_report(dir.string(), out.string());
+  const std::string gp = read(out / "lambda_c_vs_theta.gp");
+  const std::size_t range = gp.find("set yrange [");
+  ASSERT_NE(range, std::string::npos) << gp;
+  double lo = 0, hi = 0;
+  ASSERT_EQ(std::sscanf(gp.c_str() + range, "set yrange [%lf:%lf]", &lo, &hi), 2) << gp.substr(range, 60);
+  // every lambda_c and the paper's values inside, the 1.4-decade bar not: the frame spans less
+  // than the bar's 2.8 decades plus the others
+  const std::vector<std::string> rows = block_rows(read(out / "lambda_c_vs_theta.dat"), "bar_low bar_high (the paper's fixed plateaus)");
+  ASSERT_EQ(rows.size(), 2u);
+  bool cut = false;
+  for (const std::string& line : rows) {
+    std::istringstream in(line);
+    double angle, lambda_c, lambda_c_err, spread, low, high;
+    in >> angle >> lambda_c >> lambda_c_err >> spread >> low >> high;
+    EXPECT_GT(lambda_c, lo) << line;
+    EXPECT_LT(lambda_c, hi) << line;
+    cut = cut || low < lo || high > hi;
+  }
+  EXPECT_TRUE(cut) << "the wide bar reaches beyond the frame";
+  EXPECT_LT(lo, 0.005);
+  EXPECT_GT(hi, 0.05);
+  EXPECT_NE(gp.find("wider than 1 decade cut at the frame"), std::string::npos) << gp;
+  // the next panel scales itself
+  EXPECT_NE(gp.find("set autoscale y", range), std::string::npos) << gp;
   fs::remove_all(dir);
 }
 

@@ -40,6 +40,23 @@ Crossover angle_group(const std::string& family, const Series& only) {
   return g;
 }
 
+/// 2D crossover groups of two series each, from consecutive (family, theta_w, lambda, beta)
+/// points (beta's error 0.05): each pair one group, named after its family.
+void add_two_point_groups(CampaignFits& fits, const std::vector<std::tuple<std::string, double, double, double>>& points) {
+  fits.series.reserve(points.size());  // the groups point into it
+  for (const auto& [family, theta, lambda, beta] : points) {
+    Series s = series(family, 2, lambda, beta, 0.05);
+    s.theta_left = s.theta_right = theta;
+    fits.series.push_back(s);
+  }
+  for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
+    Crossover g = angle_group(std::get<0>(points[i]), fits.series[i]);
+    g.dimension = 2;
+    g.finite.push_back(&fits.series[i + 1]);
+    fits.crossovers.push_back(g);
+  }
+}
+
 /// One crossover group per (family, theta_w, lambda_c, error of log10 lambda_c), each with two
 /// series at that angle (lambda = 1e-4 and 10: every lambda_c of these tests lies among them)
 /// and the paper's sigmoid fitted: groups that differ only in the angle.
@@ -452,21 +469,8 @@ TEST(PaperClaims, AnExtrapolatedLambdaCIsNotJudgedAgainstAnotherAngle) {
 // 10.1. A family whose betas never cross d - 1 (all above at 90 deg) gets no such row.
 TEST(PaperClaims, TheCrossingOfDMinusOneFallsWithTheAngleWithoutASigmoid) {
   CampaignFits fits;
-  const std::vector<std::tuple<std::string, double, double, double>> points = {
-      {"Y", 90, 1e-2, 1.4}, {"Y", 90, 1e-1, 0.6}, {"Y", 30, 1e-3, 1.2}, {"Y", 30, 1e-2, 0.8},
-      {"Z", 90, 1e-2, 1.4}, {"Z", 90, 1e-1, 1.2}, {"Z", 30, 1e-3, 1.3}, {"Z", 30, 1e-2, 0.9}};
-  fits.series.reserve(points.size());
-  for (const auto& [family, theta, lambda, beta] : points) {
-    Series s = series(family, 2, lambda, beta, 0.05);
-    s.theta_left = s.theta_right = theta;
-    fits.series.push_back(s);
-  }
-  for (std::size_t i = 0; i < points.size(); i += 2) {
-    Crossover g = angle_group(std::get<0>(points[i]), fits.series[i]);
-    g.dimension = 2;
-    g.finite.push_back(&fits.series[i + 1]);
-    fits.crossovers.push_back(g);
-  }
+  add_two_point_groups(fits, {{"Y", 90, 1e-2, 1.4}, {"Y", 90, 1e-1, 0.6}, {"Y", 30, 1e-3, 1.2}, {"Y", 30, 1e-2, 0.8},
+                              {"Z", 90, 1e-2, 1.4}, {"Z", 90, 1e-1, 1.2}, {"Z", 30, 1e-3, 1.3}, {"Z", 30, 1e-2, 0.9}});
   const auto checks = check_paper_claims(fits);
   const ClaimCheck* y = find(checks, "where beta crosses d - 1 (interpolated): lambda(theta_w) / lambda(90)", "Y at theta_w = 30");
   ASSERT_NE(y, nullptr);
@@ -495,20 +499,7 @@ TEST(PaperClaims, LambdaCWithoutASigmoidIsWhereTheExponentsCrossDMinusOneAgainst
   CampaignFits fits;
   // family P crosses 1 at 10^-1.5 = 0.0316 (1.4 at 1e-2, 0.6 at 0.1), Q at 0.05 itself (1.4 at
   // 0.01, 0.6 at 0.25: log10 0.05 lies at the chord's fraction 0.5)
-  const std::vector<std::tuple<std::string, double, double>> points = {
-      {"P", 1e-2, 1.4}, {"P", 1e-1, 0.6}, {"Q", 1e-2, 1.4}, {"Q", 0.25, 0.6}};
-  fits.series.reserve(points.size());
-  for (const auto& [family, lambda, beta] : points) {
-    Series s = series(family, 2, lambda, beta, 0.05);
-    s.theta_left = s.theta_right = 90;
-    fits.series.push_back(s);
-  }
-  for (std::size_t i = 0; i < points.size(); i += 2) {
-    Crossover g = angle_group(std::get<0>(points[i]), fits.series[i]);
-    g.dimension = 2;
-    g.finite.push_back(&fits.series[i + 1]);
-    fits.crossovers.push_back(g);
-  }
+  add_two_point_groups(fits, {{"P", 90, 1e-2, 1.4}, {"P", 90, 1e-1, 0.6}, {"Q", 90, 1e-2, 1.4}, {"Q", 90, 0.25, 0.6}});
   const auto checks = check_paper_claims(fits);
   const std::string claim = "lambda_c of beta(lambda) (Fig. 4, 6), where beverloo's exponents (not rescaled) cross d - 1";
   const ClaimCheck* p = find(checks, claim, "P");

@@ -228,6 +228,10 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
   db::Statement sp = db.prepare(
       "UPDATE crossover_fit_results SET replica_fits = ?2, log10_lambda_c_replica_spread = ?3, b_replica_spread = ?4, "
       "free_replica_fits = ?5, free_log10_lambda_c_replica_spread = ?6, free_b_replica_spread = ?7 WHERE group_key = ?1");
+  db::Statement cr = db.prepare(
+      "UPDATE crossover_fit_results SET crossing_lambda = ?2, crossing_lambda_lo = ?3, crossing_lambda_hi = ?4, "
+      "crossing_log10_err = ?5, crossing_log10_replica_spread = ?6, crossing_replicas = ?7, "
+      "crossing_log10_interpolation = ?8, crossing_log10_sigma = ?9 WHERE group_key = ?1");
   for (const Crossover& g : fits.crossovers) {
     cx.bind(1, g.key).bind(2, g.label).bind(3, g.dimension).bind(4, g.fitted_points());
     if (g.fit)
@@ -259,6 +263,12 @@ void store_fits(db::Database& db, const CampaignFits& fits) {
         if (std::isnan(v)) sp.bind_null(c); else sp.bind(c, v);
     }
     sp.run();
+    if (const std::optional<MidpointCrossing> m = crossing_of_d_minus_1(g)) {
+      cr.bind(1, g.key).bind(2, std::pow(10.0, m->log10_lambda)).bind(3, m->lambda_lo).bind(4, m->lambda_hi).bind(5, m->sigma);
+      for (auto [c, v] : {std::pair{6, m->spread}, std::pair{8, m->interpolation}})
+        if (std::isnan(v)) cr.bind_null(c); else cr.bind(c, v);
+      cr.bind(7, m->replicas).bind(9, m->verdict_sigma()).run();
+    }
   }
   tx.commit();
 }
@@ -371,9 +381,12 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
   fcsv << "label,points,lambda_c,lambda_c_err,b,b_err,chi2_red,free_lambda_c,free_lambda_c_err,free_b,free_b_err,"
           "free_beta_lambda0,free_beta_lambda0_err,free_beta_inf,free_beta_inf_err,free_chi2_red,free_message,"
           "replica_fits,log10_lambda_c_replica_spread,b_replica_spread,free_replica_fits,"
-          "free_log10_lambda_c_replica_spread,free_b_replica_spread\n";
+          "free_log10_lambda_c_replica_spread,free_b_replica_spread,crossing_lambda,crossing_lambda_lo,crossing_lambda_hi,"
+          "crossing_log10_err,crossing_log10_replica_spread,crossing_replicas,crossing_log10_interpolation,"
+          "crossing_log10_sigma\n";
   fmd << "| group | lambda_c (plateaus 1/2, 3/2 from d) | chi2_red | lambda_c (plateaus free) | b | beta(0) fitted | "
-         "beta(inf) fitted | chi2_red | beta(0), beta(inf) measured |\n|---|---|---|---|---|---|---|---|---|\n";
+         "beta(inf) fitted | chi2_red | beta(0), beta(inf) measured | beta = d - 1 at (no sigmoid) |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Crossover& g : fits.crossovers) {
     fcsv << csv_field(g.label) << ',' << g.fitted_points() << ',';
     if (g.fit)
@@ -391,6 +404,13 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     }
     for (const Crossover::ReplicaSpread* r : {&g.spread, &g.spread_free})
       fcsv << ',' << r->replicas << ',' << fmt(r->log10_lambda_c, 4) << ',' << fmt(r->b, 4);
+    const std::optional<MidpointCrossing> crossing = crossing_of_d_minus_1(g);
+    if (crossing)
+      fcsv << ',' << fmt(std::pow(10.0, crossing->log10_lambda), 8) << ',' << fmt(crossing->lambda_lo, 8) << ','
+           << fmt(crossing->lambda_hi, 8) << ',' << fmt(crossing->sigma, 4) << ',' << fmt(crossing->spread, 4) << ','
+           << crossing->replicas << ',' << fmt(crossing->interpolation, 4) << ',' << fmt(crossing->verdict_sigma(), 4);
+    else
+      fcsv << ",,,,,,,,";
     fcsv << "\n";
     // lambda_c with its spread over replicas in decades (log10), where there is one
     auto spread_text = [](const Crossover::ReplicaSpread& r) {
@@ -412,7 +432,11 @@ void write_fit_tables(const CampaignFits& fits, const std::string& dir) {
     } else {
       fmd << "no fit: " << markdown_cell(g.message_free) << " | | | | ";
     }
-    fmd << " | " << measured(g.limit0) << ", " << measured(g.limit_inf) << " |\n";
+    fmd << " | " << measured(g.limit0) << ", " << measured(g.limit_inf) << " | "
+        << (crossing ? fmt(std::pow(10.0, crossing->log10_lambda)) + " (" + fmt(crossing->lambda_lo) + " .. " +
+                           fmt(crossing->lambda_hi) + "; ± " + fmt(crossing->verdict_sigma(), 2) + " in log10)"
+                     : std::string("-"))
+        << " |\n";
   }
   // clogging: per series and w with the Kaplan-Meier probability to clog within t_max
   std::ostringstream ccsv, cmd;

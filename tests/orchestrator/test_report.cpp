@@ -323,6 +323,21 @@ TEST(Report, LambdaCVersusThetaDrawsWhereBetaCrossesDMinusOne) {
     EXPECT_LT(std::fabs(std::log10(std::stod(theta.substr(at + 4)) / lambda_c)), 0.01) << theta.substr(at, 40);
   }
   EXPECT_NE(read(out / "lambda_c_vs_theta.gp").find("where beta crosses d - 1"), std::string::npos);
+  // the same crossing is stored with the fits (schema/0014), queryable beside the sigmoids
+  db::Database db((dir / "campaign.sqlite").string(), db::Database::Mode::ReadOnly);
+  db::Statement q = db.prepare(
+      "SELECT crossing_lambda, crossing_lambda_lo, crossing_lambda_hi, crossing_log10_sigma, crossing_log10_interpolation "
+      "FROM crossover_fits_both_ways WHERE crossing_lambda IS NOT NULL ORDER BY crossing_lambda");
+  for (const double lambda_c : {0.005, 0.05}) {
+    ASSERT_TRUE(q.step()) << "a group's crossing missing";
+    EXPECT_LT(std::fabs(std::log10(q.get_double(0) / lambda_c)), 0.01);
+    EXPECT_LT(q.get_double(1), q.get_double(0));
+    EXPECT_GT(q.get_double(2), q.get_double(0));
+    EXPECT_GT(q.get_double(3), 0);
+    EXPECT_GE(q.get_double(3), q.get_double(4)) << "the interpolation's error is one part of the sigma";
+  }
+  EXPECT_FALSE(q.step());
+  EXPECT_NE(read(out / "crossover_fits_both_ways.md").find("beta = d - 1 at (no sigmoid)"), std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -99,10 +99,12 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
     return;
   }
   html << "<p>beta(lambda) = d - 1 - tanh[log10(lambda/lambda_c)/b]/2 with the paper's plateaus d - 1/2 and d - 3/2, "
-          "and the same law with its plateaus free (beta(0) and beta(inf) fitted), beside the limits' own fits.</p>\n"
+          "and the same law with its plateaus free (beta(0) and beta(inf) fitted), beside the limits' own fits; and, "
+          "without a sigmoid, where the measured exponents cross d - 1 (interpolated in log10 lambda; its sigma in "
+          "decades: the exponents' errors or the replicas' spread, the interpolation's in quadrature).</p>\n"
        << "<table><tr><th>group</th><th>points</th><th>lambda_c</th><th>b</th><th>chi2_red</th>"
        << "<th>lambda_c, plateaus free</th><th>b</th><th>beta(0), beta(inf) fitted</th><th>chi2_red</th>"
-       << "<th>beta(lambda=0)</th><th>beta(lambda=inf)</th></tr>\n";
+       << "<th>beta = d - 1 at</th><th>beta(lambda=0)</th><th>beta(lambda=inf)</th></tr>\n";
   // lambda_c's run-to-run spread (in decades) where replicas give one
   auto spread = [](const Crossover::ReplicaSpread& r) {
     const std::string phrase = lambda_c_spread_phrase(r);
@@ -124,6 +126,11 @@ void fit_tables(std::ostringstream& html, const CampaignFits& fits) {
            << pm(g.fit_free->beta_inf, g.fit_free->beta_inf_err) << "</td><td>" << format_value(g.fit_free->chi2_red, 2) << "</td>";
     else
       html << "<td colspan=4>no fit: " << html_escape(g.message_free) << "</td>";
+    html << "<td>";
+    if (const std::optional<MidpointCrossing> m = crossing_of_d_minus_1(g))
+      html << format_value(std::pow(10.0, m->log10_lambda), 3) << "<br><small>" << format_value(m->lambda_lo, 2) << " .. "
+           << format_value(m->lambda_hi, 2) << "; &plusmn; " << format_value(m->verdict_sigma(), 2) << " in log10</small>";
+    html << "</td>";
     auto limit = [](const Series* s) { return s && s->fit ? pm(s->fit->beta, s->fit->beta_err) : std::string(); };
     html << "<td>" << limit(g.limit0) << "</td><td>" << limit(g.limit_inf) << "</td></tr>\n";
   }

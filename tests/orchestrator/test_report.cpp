@@ -338,6 +338,18 @@ TEST(Report, LambdaCVersusThetaDrawsWhereBetaCrossesDMinusOne) {
   }
   EXPECT_FALSE(q.step());
   EXPECT_NE(read(out / "crossover_fits_both_ways.md").find("beta = d - 1 at (no sigmoid)"), std::string::npos);
+  // and the report's page: the crossover table's column holds both crossings (3 digits)
+  const std::string html = read(out / "index.html");
+  ASSERT_NE(html.find("<th>beta = d - 1 at</th>"), std::string::npos);
+  std::vector<double> cells;  // the numbers before "<br><small>... in log10</small>"
+  for (std::size_t at = html.find(" in log10</small>"); at != std::string::npos; at = html.find(" in log10</small>", at + 1)) {
+    const std::size_t td = html.rfind("<td>", at);
+    cells.push_back(std::stod(html.substr(td + 4)));
+  }
+  ASSERT_EQ(cells.size(), 2u) << html;
+  std::sort(cells.begin(), cells.end());
+  EXPECT_LT(std::fabs(std::log10(cells[0] / 0.005)), 0.01) << cells[0];
+  EXPECT_LT(std::fabs(std::log10(cells[1] / 0.05)), 0.01) << cells[1];
   fs::remove_all(dir);
 }
 

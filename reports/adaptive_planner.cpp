@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "campaign_fits.h"
 #include "campaign_runs.h"
+#include "crossover_groups.h"
 #include "lambda_series.h"
 #include "next_lambda.h"
 #include "next_width.h"
@@ -110,6 +112,28 @@ JobSpec extended_job(db::Database& db, const std::string& key, const RunRecord& 
 /// and its stop (the series keep their own rows, so a new series has its own budget of widths).
 std::string group_key(const Crossover& g) { return "lambda_" + g.key.substr(0, 16); }
 
+/// The candidate lambda (10^(k / per_decade) within the spec's range, none within half a step
+/// in log10 of a series the group has, as next_lambda's) strictly inside the crossing's
+/// bracketing pair and nearest the crossing (ties to the smaller); none when the bracket holds
+/// no such candidate.
+std::optional<double> crossing_candidate(const MidpointCrossing& m, const std::vector<double>& group_lambdas,
+                                         const LambdaAdaptiveSpec& spec) {
+  const double step = 1.0 / spec.per_decade, lo = std::log10(m.lambda_lo), hi = std::log10(m.lambda_hi);
+  std::optional<double> best;
+  const long k_lo = static_cast<long>(std::ceil(std::max(lo, std::log10(spec.lambda_lo)) * spec.per_decade - 1e-9));
+  const long k_hi = static_cast<long>(std::floor(std::min(hi, std::log10(spec.lambda_hi)) * spec.per_decade + 1e-9));
+  for (long k = k_lo; k <= k_hi; ++k) {
+    const double x = k * step;
+    if (!(x > lo && x < hi)) continue;
+    const bool taken = std::any_of(group_lambdas.begin(), group_lambdas.end(),
+                                   [&](double l) { return std::fabs(std::log10(l) - x) < 0.5 * step; });
+    if (taken) continue;
+    if (!best || std::fabs(x - m.log10_lambda) < std::fabs(*best - m.log10_lambda) - 1e-12) best = x;
+  }
+  if (best) return std::pow(10.0, *best);
+  return std::nullopt;
+}
+
 /// The lambda stage (adaptive_spec.h "lambda"): per beta(lambda) group not yet stopped, fit
 /// the crossover and add one whole series (the grid's widths of its nearest series) at the lambda
 /// next_lambda() chooses, or stop the group. Runs only when every series is decided.
@@ -140,6 +164,88 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
       d.flowing_points = static_cast<int>(g.finite.size());
       out.push_back(std::move(d));
     };
+    // one whole series at l_new (the grid's widths of its nearest series), each job's decision
+    // described by `describe`; a lambda that cannot be placed stops the group instead
+    auto add_series = [&](double l_new, const std::function<void(PlanDecision&, double w)>& describe) {
+      // placed between the series that bracket it, the group's limits included (lambda_series.h)
+      LambdaGroupJobs group_jobs;
+      for (const Series* s : g.finite) group_jobs.finite.emplace_back(s->lambda, jobs[s->key].template_job);
+      if (g.limit0) group_jobs.limit0 = &jobs[g.limit0->key].template_job;
+      if (g.limit_inf) group_jobs.limit_inf = &jobs[g.limit_inf->key].template_job;
+      // the finite series nearest below it (the lowest beyond the low end): whose grid widths it takes
+      std::size_t below = 0;
+      while (below + 1 < g.finite.size() && g.finite[below + 1]->lambda < l_new) ++below;
+      const SeriesJobs& ta = jobs[g.finite[below]->key];
+      LambdaJob made;
+      try {  // a lambda the parameter table refuses (a drag rate beyond its range, say) stops the group
+        made = job_at_lambda_in_group(group_jobs, l_new);
+      } catch (const std::exception& e) {
+        made.problem = e.what();
+      }
+      if (!made.job) {
+        stop_group("cannot place lambda = " + num(l_new) + ": " + made.problem);
+        return;
+      }
+      // the grid's widths: of that series if it has some (a series the planner added has none of
+      // its own), else of any series of the group that has
+      std::set<double> widths = ta.grid_widths;
+      for (const Series* s : g.finite)
+        if (widths.empty()) widths = jobs[s->key].grid_widths;
+      if (widths.empty()) widths = {ta.template_job.at("w").get<double>()};
+      for (const double w : widths) {
+        json job = *made.job;
+        job["w"] = w;
+        job["replica"] = 0;
+        PlanDecision d;
+        d.series_key = gkey;
+        d.action = "add";
+        JobSpec spec_job;
+        spec_job.config = SimConfig::from_json(job);
+        spec_job.key = job_key(spec_job.config);
+        spec_job.job = spec_job.config.to_json();
+        spec_job.point = {{"w", w}, {"lambda", l_new}, {"replica", 0}, {"adaptive", true}};
+        d.job = spec_job;
+        d.flowing_points = static_cast<int>(g.finite.size());
+        describe(d, w);
+        out.push_back(std::move(d));
+      }
+    };
+    const bool budget_spent = static_cast<int>(added_series.size()) >= spec.max_added_series;
+    // where the exponents cross d - 1 first: a series at the crossing while the chord's
+    // interpolation error exceeds its target (no sigmoid needed); `crossing_met` says why not
+    std::string crossing_met;
+    if (spec.crossing_interpolation_err) {
+      const std::optional<MidpointCrossing> m = crossing_of_d_minus_1(g);
+      std::vector<double> group_lambdas = g.unfitted_lambda;
+      for (const Series* s : g.finite) group_lambdas.push_back(s->lambda);
+      std::optional<double> l_new;
+      const std::string interpolation =
+          !m ? "" : std::isnan(m->interpolation) ? "unknown (no neighbouring lambda)" : num(m->interpolation);
+      if (!m)
+        crossing_met = "beta does not cross d - 1 among the measured lambdas";
+      else if (!std::isnan(m->interpolation) && m->interpolation <= *spec.crossing_interpolation_err)
+        crossing_met = "crossing interpolation err " + interpolation;
+      else if (!(l_new = crossing_candidate(*m, group_lambdas, spec)))
+        crossing_met = "the crossing as fine as per_decade " + std::to_string(spec.per_decade) +
+                       " allows (no candidate lambda between " + num(m->lambda_lo) + " and " + num(m->lambda_hi) +
+                       "), crossing interpolation err " + interpolation;
+      if (crossing_met.empty()) {
+        if (budget_spent)
+          stop_group("budget spent: " + std::to_string(added_series.size()) +
+                     " series added (max_added_series), crossing interpolation err " + interpolation);
+        else
+          add_series(*l_new, [&](PlanDecision& d, double w) {
+            d.reason = g.label + ": new series at lambda = " + num(*l_new) + " (w = " + num(w) + "): beta crosses d - 1 at " +
+                       num(std::pow(10.0, m->log10_lambda)) + " between " + num(m->lambda_lo) + " and " +
+                       num(m->lambda_hi) + ", interpolation err " + interpolation;
+          });
+        continue;
+      }
+    }
+    if (!spec.log10_lambda_c_err && !spec.b_err) {
+      stop_group(crossing_met.rfind("the crossing as fine", 0) == 0 ? crossing_met : "targets met: " + crossing_met);
+      continue;
+    }
     // a singular fit, or one that takes series without a Beverloo law, is no measurement, but it
     // places the step: new lambdas go there
     const std::optional<CrossoverFit>& design_fit = g.fit ? g.fit : g.design_fit;
@@ -174,64 +280,25 @@ void plan_lambda(db::Database& db, const LambdaAdaptiveSpec& spec, const Campaig
     const std::string errs =
         "log10 lambda_c err " + num(advice.log10_lambda_c_err_now) + ", b err " + num(advice.b_err_now);
     if (advice.targets_met) {
-      stop_group("targets met: " + errs);
+      stop_group("targets met: " + errs + (crossing_met.empty() ? "" : "; " + crossing_met));
       continue;
     }
-    if (static_cast<int>(added_series.size()) >= spec.max_added_series) {
+    if (budget_spent) {
       stop_group("budget spent: " + std::to_string(added_series.size()) + " series added (max_added_series), " + errs);
       continue;
     }
-    // placed between the series that bracket it, the group's limits included (lambda_series.h)
     const double l_new = advice.next->lambda;
-    LambdaGroupJobs group_jobs;
-    for (const Series* s : g.finite) group_jobs.finite.emplace_back(s->lambda, jobs[s->key].template_job);
-    if (g.limit0) group_jobs.limit0 = &jobs[g.limit0->key].template_job;
-    if (g.limit_inf) group_jobs.limit_inf = &jobs[g.limit_inf->key].template_job;
-    // the finite series nearest below it (the lowest beyond the low end): whose grid widths it takes
-    std::size_t below = 0;
-    while (below + 1 < g.finite.size() && g.finite[below + 1]->lambda < l_new) ++below;
-    const SeriesJobs& ta = jobs[g.finite[below]->key];
-    LambdaJob made;
-    try {  // a lambda the parameter table refuses (a drag rate beyond its range, say) stops the group
-      made = job_at_lambda_in_group(group_jobs, l_new);
-    } catch (const std::exception& e) {
-      made.problem = e.what();
-    }
-    if (!made.job) {
-      stop_group("cannot place lambda = " + num(l_new) + ": " + made.problem);
-      continue;
-    }
-    // the grid's widths: of that series if it has some (a series the planner added has none of
-    // its own), else of any series of the group that has
-    std::set<double> widths = ta.grid_widths;
-    for (const Series* s : g.finite)
-      if (widths.empty()) widths = jobs[s->key].grid_widths;
-    if (widths.empty()) widths = {ta.template_job.at("w").get<double>()};
-    for (const double w : widths) {
-      json job = *made.job;
-      job["w"] = w;
-      job["replica"] = 0;
-      PlanDecision d;
-      d.series_key = gkey;
-      d.action = "add";
-      JobSpec spec_job;
-      spec_job.config = SimConfig::from_json(job);
-      spec_job.key = job_key(spec_job.config);
-      spec_job.job = spec_job.config.to_json();
-      spec_job.point = {{"w", w}, {"lambda", l_new}, {"replica", 0}, {"adaptive", true}};
-      d.job = spec_job;
+    add_series(l_new, [&](PlanDecision& d, double w) {
       d.k_err = advice.log10_lambda_c_err_now;
       d.beta_err = advice.b_err_now;
       d.k_err_after = advice.next->log10_lambda_c_err_after;
       d.beta_err_after = advice.next->b_err_after;
-      d.flowing_points = static_cast<int>(g.finite.size());
       const bool predicted = std::isfinite(advice.next->log10_lambda_c_err_after);
       d.reason = g.label + ": new series at lambda = " + num(l_new) + " (w = " + num(w) + "): " + errs +
                  (predicted ? " -> " + num(advice.next->log10_lambda_c_err_after) + ", " + num(advice.next->b_err_after) +
                                   " predicted"
                             : "; the step lies between series: a series on it (no prediction)");
-      out.push_back(std::move(d));
-    }
+    });
   }
 }
 }  // namespace

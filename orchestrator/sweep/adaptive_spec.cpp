@@ -38,14 +38,20 @@ LambdaAdaptiveSpec parse_lambda(const json& block) {
               "target, range, per_decade, max_added_series");
   LambdaAdaptiveSpec s;
   if (!block.contains("target"))
-    throw SweepError(at + ".target", "missing: say which errors are wanted (log10_lambda_c_err, b_err)");
+    throw SweepError(at + ".target",
+                     "missing: say which errors are wanted (log10_lambda_c_err, b_err, crossing_interpolation_err)");
   const json& t = block["target"];
   if (!t.is_object()) throw SweepError(at + ".target", shown(t) + ": must be an object");
-  only_fields(t, {"log10_lambda_c_err", "b_err"}, at + ".target", "log10_lambda_c_err, b_err");
+  only_fields(t, {"log10_lambda_c_err", "b_err", "crossing_interpolation_err"}, at + ".target",
+              "log10_lambda_c_err, b_err, crossing_interpolation_err");
   if (t.contains("log10_lambda_c_err"))
     s.log10_lambda_c_err = positive_number(t["log10_lambda_c_err"], at + ".target.log10_lambda_c_err");
   if (t.contains("b_err")) s.b_err = positive_number(t["b_err"], at + ".target.b_err");
-  if (!s.log10_lambda_c_err && !s.b_err) throw SweepError(at + ".target", "names no target (log10_lambda_c_err, b_err)");
+  if (t.contains("crossing_interpolation_err"))
+    s.crossing_interpolation_err =
+        positive_number(t["crossing_interpolation_err"], at + ".target.crossing_interpolation_err");
+  if (!s.log10_lambda_c_err && !s.b_err && !s.crossing_interpolation_err)
+    throw SweepError(at + ".target", "names no target (log10_lambda_c_err, b_err, crossing_interpolation_err)");
   if (!block.contains("range")) throw SweepError(at + ".range", "missing: the lambdas [lo, hi] new series may take");
   const json& r = block["range"];
   if (!r.is_array() || r.size() != 2) throw SweepError(at + ".range", shown(r) + ": must be [lo, hi]");

@@ -25,6 +25,12 @@
 ///              "range": [1e-3, 10], "per_decade": 4,                    candidate lambdas
 ///              "max_added_series": 4}                                   per group
 ///
+/// A third target, "crossing_interpolation_err" (decades), needs no sigmoid: where the group's
+/// measured exponents cross d - 1 (reports/crossover_groups.h, MidpointCrossing), a new series
+/// goes at the candidate lambda nearest that crossing, inside its bracketing pair, until the
+/// chord's interpolation error (a parabola through a neighbouring lambda) is at most the target
+/// or no candidate is left inside the bracket. It is met before the sigmoid's targets are pursued.
+///
 /// The budget is a number of jobs, not CPU hours: CPU time differs between machines and runs,
 /// and the same results must always give the same decisions.
 #include <optional>
@@ -35,6 +41,7 @@ namespace beverloo {
 
 struct LambdaAdaptiveSpec {
   std::optional<double> log10_lambda_c_err, b_err;
+  std::optional<double> crossing_interpolation_err;  ///< decades; see above
   double lambda_lo = 0, lambda_hi = 0;
   int per_decade = 4;
   int max_added_series = 4;

@@ -59,4 +59,40 @@ bad '{"target": {"b_err": 0.1}, "range": [10, 0.001]}' 'adaptive.lambda.range'
 bad '{"target": {"b_err": 0.1}, "range": [0.001, 10], "per_decade": 0}' 'adaptive.lambda.per_decade'
 bad '{"target": {"b_err": 0.1}, "range": [0.001, 10], "max_added_series": 1.5}' 'adaptive.lambda.max_added_series'
 bad '{"target": {"b_err": 0.1}, "range": [0.001, 10], "steps": 3}' 'adaptive.lambda.steps'
+bad '{"target": {"crossing_interpolation_err": -0.1}, "range": [0.001, 10]}' 'adaptive.lambda.target.crossing_interpolation_err'
 echo "ok  bad lambda blocks refused with their field named"
+
+# The crossing target alone (no sigmoid): each new series goes at a candidate lambda
+# 10^(k/per_decade) inside the pair that brackets where beta crosses d - 1, the one nearest the
+# crossing, until the chord's interpolation error meets the target or no candidate is left.
+cat > "$WORK/crossing.json" <<'J'
+{"name": "adaptive-crossing",
+ "base": {"N": 150, "W": 10, "E_sp": 100},
+ "run": {"t_max": 300, "target_rel_err": 1e-6, "min_window": 10, "checkpoint_interval": 2},
+ "sweep": {"product": [{"lambda": [0.001, 0.1, 10]}, {"w": [3, 4, 5, 6]}]},
+ "adaptive": {"target": {"beta_err": 10}, "w_range": [2.5, 8],
+              "lambda": {"target": {"crossing_interpolation_err": 0.001}, "range": [1e-3, 10], "per_decade": 4,
+                         "max_added_series": 3}}}
+J
+"$BIN" run "$WORK/crossing.json" --dir "$WORK/crossing" --workers 2 --progress quiet 2> "$WORK/crossing.log"
+sqlite3 -separator $'\t' "$WORK/crossing/campaign.sqlite" \
+  "SELECT action, coalesce(w, ''), reason FROM adaptive_decisions WHERE series_key LIKE 'lambda_%' ORDER BY seq" > "$WORK/crossing.rows"
+python3 - "$WORK/crossing.rows" <<'PY' || fail "crossing decisions: $(cat "$WORK/crossing.rows")"
+import math, re, sys
+rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1])]
+adds = [r for r in rows if r[0] == "add"]
+stops = [r for r in rows if r[0] == "stop"]
+assert adds and len(adds) % 4 == 0, "whole series of the grid's 4 widths"
+assert len(stops) == 1 and rows[-1][0] == "stop", "one stop, last"
+for action, w, reason in adds:
+    m = re.search(r"new series at lambda = ([0-9.e+-]+) .*crosses d - 1 at ([0-9.e+-]+) between ([0-9.e+-]+) and ([0-9.e+-]+)", reason)
+    assert m, reason
+    new, at, lo, hi = (float(x) for x in m.groups())
+    assert lo < new < hi, f"{new} outside its bracket {lo} .. {hi}"
+    k = math.log10(new) * 4
+    assert abs(k - round(k)) < 1e-2, f"{new} is not a candidate 10^(k/4)"
+stop = stops[0][2]
+assert any(s in stop for s in ("crossing interpolation err", "the crossing as fine as per_decade 4", "budget spent")), stop
+print("  " + adds[0][2][:110]); print("  " + stop[:140])
+PY
+echo "ok  the crossing target adds series inside the crossing's bracket and stops with its reason"

@@ -383,9 +383,12 @@ void add_campaign_commands(CLI::App& app, int& exit_status) {
         if (const auto& l = a->lambda) {
           std::printf("adaptive lambda: per beta(lambda) group up to %d more series at lambda in [%g, %g], %d per decade, until",
                       l->max_added_series, l->lambda_lo, l->lambda_hi, l->per_decade);
-          if (l->log10_lambda_c_err) std::printf(" log10_lambda_c_err <= %g", *l->log10_lambda_c_err);
-          if (l->log10_lambda_c_err && l->b_err) std::printf(" and");
-          if (l->b_err) std::printf(" b_err <= %g", *l->b_err);
+          // the targets given, joined by "and": the crossing's first, as the planner pursues it
+          const char* joint = "";
+          if (l->crossing_interpolation_err)
+            std::printf(" crossing_interpolation_err <= %g", *l->crossing_interpolation_err), joint = " and";
+          if (l->log10_lambda_c_err) std::printf("%s log10_lambda_c_err <= %g", joint, *l->log10_lambda_c_err), joint = " and";
+          if (l->b_err) std::printf("%s b_err <= %g", joint, *l->b_err);
           std::printf("\n");
         }
       }

@@ -74,6 +74,8 @@ cat > "$WORK/crossing.json" <<'J'
               "lambda": {"target": {"crossing_interpolation_err": 0.001}, "range": [1e-3, 10], "per_decade": 4,
                          "max_added_series": 3}}}
 J
+"$BIN" sweep check "$WORK/crossing.json" | grep -q 'until crossing_interpolation_err <= 0.001$' \
+  || fail "sweep check does not state the crossing target: $("$BIN" sweep check "$WORK/crossing.json")"
 "$BIN" run "$WORK/crossing.json" --dir "$WORK/crossing" --workers 2 --progress quiet 2> "$WORK/crossing.log"
 sqlite3 -separator $'\t' "$WORK/crossing/campaign.sqlite" \
   "SELECT action, coalesce(w, ''), reason FROM adaptive_decisions WHERE series_key LIKE 'lambda_%' ORDER BY seq" > "$WORK/crossing.rows"

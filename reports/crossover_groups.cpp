@@ -397,6 +397,15 @@ std::optional<MidpointCrossing> crossing_of(const Crossover& g, double level, Fi
       const double moved = std::fabs(parabola_crossing(x, b, level, x1, x2) - m.log10_lambda);
       m.interpolation = std::isnan(m.interpolation) ? moved : std::max(m.interpolation, moved);
     }
+    // a neighbour's step against the pair's direction: beta turns back there
+    const double direction = b2 > b1 ? 1 : -1;
+    auto against = [&](std::size_t from, std::size_t to) {
+      const BeverlooFit &a = *points[from].second, &c = *points[to].second;
+      const double step = (c.beta - a.beta) * direction, err = std::hypot(a.beta_err, c.beta_err);
+      if (step < 0 && err > 0) m.reversal_z = std::isnan(m.reversal_z) ? -step / err : std::max(m.reversal_z, -step / err);
+    };
+    if (i >= 1) against(i - 1, i);
+    if (i + 2 < points.size()) against(i + 1, i + 2);
     return m;
   }
   return std::nullopt;

@@ -123,6 +123,14 @@ std::string crossing_text(const MidpointCrossing& m) {
          format_value(m.lambda_hi, 2) + ")";
 }
 
+/// "; beta turns back next to the crossing (z = 9.5): ..." where a neighbouring step goes
+/// against the bracketing pair's direction by more than kClaimAgreeSigmas, else "".
+std::string reversal_text(const MidpointCrossing& m, const std::string& where = "") {
+  if (!(m.reversal_z > kClaimAgreeSigmas)) return "";
+  return "; beta turns back next to the crossing" + where + " (z = " + z_text(m.reversal_z) +
+         "): not monotone there, the chord rests on that stretch";
+}
+
 /// lambda_c without a sigmoid: where the measured beta(lambda) crosses d - 1, the paper's
 /// midpoint by construction, against the paper's value in log10, sigma MidpointCrossing's
 /// verdict_sigma. The paper's own exponents were rescaled before its fit (docs/paper.md,
@@ -142,7 +150,8 @@ ClaimCheck crossing_lambda_c_check(const Crossover& g, const MidpointCrossing& m
                     (std::isnan(m.spread) ? std::string("none") : format_value(m.spread, 2) + " over " +
                                                                     std::to_string(m.replicas) + " replicas") +
                     ", the interpolation's " +
-                    (std::isnan(m.interpolation) ? std::string("none (no neighbouring lambda)") : format_value(m.interpolation, 2));
+                    (std::isnan(m.interpolation) ? std::string("none (no neighbouring lambda)") : format_value(m.interpolation, 2)) +
+                    reversal_text(m);
   if (!(log10_sigma > 0)) {
     c.verdict = "not judged: no error";
     return c;
@@ -279,7 +288,9 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       };
       c.measured_text += "; sigma from the exponents' errors or the replicas' spread, and in quadrature the "
                          "interpolation's, where a parabola through a neighbouring lambda moves the crossing: " +
-                         interpolation_text(*at) + " and " + interpolation_text(*at_ref) + " decades)";
+                         interpolation_text(*at) + " and " + interpolation_text(*at_ref) + " decades" +
+                         reversal_text(*at, " at " + format_value(theta, 3) + " deg") +
+                         reversal_text(*at_ref, " at " + format_value(reference, 3) + " deg") + ")";
       judge_ratio(c, log_ratio, log_sigma, plateau);
       out.push_back(c);
     };

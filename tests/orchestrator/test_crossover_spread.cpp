@@ -287,6 +287,15 @@ TEST(MidpointCrossing, TheInterpolationsErrorIsWhatAParabolaThroughANeighbourMov
   ASSERT_TRUE(m_pair);
   EXPECT_TRUE(std::isnan(m_pair->interpolation));
   EXPECT_DOUBLE_EQ(m_pair->verdict_sigma(), m_pair->sigma);
+  // monotone: nothing turns back
+  EXPECT_TRUE(std::isnan(m->reversal_z));
+  // beta turning back above the pair (the authors' SP model at 30 deg: 1.04, 0.73, then 0.95):
+  // the step 0.73 -> 0.95 goes against the pair's fall by 0.22 / (0.05 sqrt 2) = 3.1 sigma
+  const std::map<double, double> turning = {{-0.9, 1.25}, {-0.35, 1.044}, {0.2, 0.732}, {0.75, 0.952}};
+  const Crossover turns = crossing_group(series, {-0.9, -0.35, 0.2, 0.75}, [&](double dx) { return turning.at(dx); });
+  const auto m_turns = crossing_of_d_minus_1(turns);
+  ASSERT_TRUE(m_turns);
+  EXPECT_NEAR(m_turns->reversal_z, 0.22 / (0.05 * std::sqrt(2.0)), 1e-9);
   // a neighbour on one side only (the crossing in the first interval): its one parabola
   const Crossover first = crossing_group(series, {-0.35, 0.2, 0.75}, curved);
   const auto m_first = crossing_of_d_minus_1(first);

@@ -516,6 +516,24 @@ TEST(PaperClaims, LambdaCWithoutASigmoidIsWhereTheExponentsCrossDMinusOneAgainst
   ASSERT_NE(q, nullptr);
   EXPECT_NEAR(q->measured, 0.05, 1e-12);
   EXPECT_EQ(q->verdict, "agrees (z = 0.0 in log10 lambda)");
+  EXPECT_EQ(p->measured_text.find("turns back"), std::string::npos) << "two points cannot turn back";
+  // a third point above Q's pair where beta rises again, 0.6 -> 0.9 at 0.05 each: 4.2 sigma
+  // against the pair's fall; the row says so, the verdict stays the chord's
+  CampaignFits turning;
+  for (const auto& [lambda, beta] : {std::pair{1e-2, 1.4}, std::pair{0.25, 0.6}, std::pair{1.0, 0.9}}) {
+    turning.series.push_back(series("T", 2, lambda, beta, 0.05));
+    turning.series.back().theta_left = turning.series.back().theta_right = 90;
+  }
+  Crossover g = angle_group("T", turning.series[0]);
+  g.dimension = 2;
+  g.finite = {&turning.series[0], &turning.series[1], &turning.series[2]};
+  turning.crossovers.push_back(g);
+  const auto turning_checks = check_paper_claims(turning);
+  const ClaimCheck* t = find(turning_checks, claim, "T");
+  ASSERT_NE(t, nullptr);
+  EXPECT_NE(t->measured_text.find("; beta turns back next to the crossing (z = 4.2): not monotone there"), std::string::npos)
+      << t->measured_text;
+  EXPECT_EQ(t->verdict, "agrees (z = 0.0 in log10 lambda)");
 }
 
 TEST(PaperClaims, LambdaCsPlateauBelowThirtyDegreesIsJudgedAgainstThirtyDegrees) {

@@ -112,24 +112,16 @@ JobSpec extended_job(db::Database& db, const std::string& key, const RunRecord& 
 /// and its stop (the series keep their own rows, so a new series has its own budget of widths).
 std::string group_key(const Crossover& g) { return "lambda_" + g.key.substr(0, 16); }
 
-/// The candidate lambda (10^(k / per_decade) within the spec's range, none within half a step
-/// in log10 of a series the group has, as next_lambda's) strictly inside the crossing's
-/// bracketing pair and nearest the crossing (ties to the smaller); none when the bracket holds
-/// no such candidate.
+/// The free candidate lambda (free_candidate_log10_lambdas, as next_lambda's) strictly inside
+/// the crossing's bracketing pair and nearest the crossing (ties to the smaller); none when the
+/// bracket holds no such candidate.
 std::optional<double> crossing_candidate(const MidpointCrossing& m, const std::vector<double>& group_lambdas,
                                          const LambdaAdaptiveSpec& spec) {
-  const double step = 1.0 / spec.per_decade, lo = std::log10(m.lambda_lo), hi = std::log10(m.lambda_hi);
+  const double lo = std::log10(m.lambda_lo), hi = std::log10(m.lambda_hi);
   std::optional<double> best;
-  const long k_lo = static_cast<long>(std::ceil(std::max(lo, std::log10(spec.lambda_lo)) * spec.per_decade - 1e-9));
-  const long k_hi = static_cast<long>(std::floor(std::min(hi, std::log10(spec.lambda_hi)) * spec.per_decade + 1e-9));
-  for (long k = k_lo; k <= k_hi; ++k) {
-    const double x = k * step;
-    if (!(x > lo && x < hi)) continue;
-    const bool taken = std::any_of(group_lambdas.begin(), group_lambdas.end(),
-                                   [&](double l) { return std::fabs(std::log10(l) - x) < 0.5 * step; });
-    if (taken) continue;
-    if (!best || std::fabs(x - m.log10_lambda) < std::fabs(*best - m.log10_lambda) - 1e-12) best = x;
-  }
+  for (const double x : free_candidate_log10_lambdas(group_lambdas, spec.lambda_lo, spec.lambda_hi, spec.per_decade))
+    if (x > lo && x < hi && (!best || std::fabs(x - m.log10_lambda) < std::fabs(*best - m.log10_lambda)))
+      best = x;  // strict: ties to the smaller
   if (best) return std::pow(10.0, *best);
   return std::nullopt;
 }

@@ -26,13 +26,32 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+std::vector<double> free_candidate_log10_lambdas(const std::vector<double>& have, double lambda_lo, double lambda_hi,
+                                                 int per_decade) {
+  if (!(lambda_lo > 0) || !(lambda_hi >= lambda_lo) || per_decade < 1)
+    throw FitError("the candidate lambdas need 0 < lambda_lo <= lambda_hi and per_decade >= 1");
+  std::vector<double> have_log;
+  for (double l : have)
+    if (l > 0 && std::isfinite(l)) have_log.push_back(std::log10(l));
+  const double step = 1.0 / per_decade;
+  const int k_lo = static_cast<int>(std::ceil(std::log10(lambda_lo) * per_decade - 1e-9));
+  const int k_hi = static_cast<int>(std::floor(std::log10(lambda_hi) * per_decade + 1e-9));
+  if (k_hi - k_lo > 100000) throw FitError("more than 100000 candidate lambdas");
+  std::vector<double> out;
+  for (int k = k_lo; k <= k_hi; ++k) {
+    const double log_l = static_cast<double>(k) / per_decade;
+    if (std::none_of(have_log.begin(), have_log.end(), [&](double h) { return std::fabs(h - log_l) < 0.5 * step; }))
+      out.push_back(log_l);
+  }
+  return out;
+}
+
 CrossoverAdvice next_lambda(int /*dimension*/, const CrossoverFit& fit, const std::vector<double>& lambda,
                             const std::vector<double>& beta_err, double lambda_lo, double lambda_hi, int per_decade,
                             const CrossoverTargets& targets) {
   if (lambda.size() != beta_err.size() || lambda.size() < 3)
     throw FitError("the design needs the group's series (at least 3 finite lambda, each with its beta error)");
-  if (!(lambda_lo > 0) || !(lambda_hi >= lambda_lo) || per_decade < 1)
-    throw FitError("the candidate lambdas need 0 < lambda_lo <= lambda_hi and per_decade >= 1");
+  const std::vector<double> candidates = free_candidate_log10_lambdas(lambda, lambda_lo, lambda_hi, per_decade);
   const double x = fit.log10_lambda_c, b = fit.b;
   if (!std::isfinite(x) || !(b > 0)) throw FitError("the crossover fit has no finite lambda_c and width b > 0");
   Mat2 F = Mat2::Zero();
@@ -44,18 +63,6 @@ CrossoverAdvice next_lambda(int /*dimension*/, const CrossoverFit& fit, const st
     errs.push_back(beta_err[i]);
   }
   if (errs.size() < 3) throw FitError("fewer than 3 finite lambda with a beta error");
-  std::vector<double> have;
-  for (double l : lambda)
-    if (l > 0 && std::isfinite(l)) have.push_back(std::log10(l));
-  const double step = 1.0 / per_decade;
-  const int k_lo = static_cast<int>(std::ceil(std::log10(lambda_lo) * per_decade - 1e-9));
-  const int k_hi = static_cast<int>(std::floor(std::log10(lambda_hi) * per_decade + 1e-9));
-  if (k_hi - k_lo > 100000) throw FitError("more than 100000 candidate lambdas");
-  auto taken = [&](double log_l) {
-    for (double h : have)
-      if (std::fabs(h - log_l) < 0.5 * step) return true;
-    return false;
-  };
   const Eigen::FullPivLU<Mat2> lu(F);
   if (!lu.isInvertible() || !(lu.rcond() > 1e-12)) {
     // The step is so sharp that no series sits on it (sech^2 u ~ 0 at every point): the series
@@ -65,9 +72,8 @@ CrossoverAdvice next_lambda(int /*dimension*/, const CrossoverFit& fit, const st
     a.log10_lambda_c_err_now = fit.log10_lambda_c_err;
     a.b_err_now = fit.b_err;
     double best = INFINITY;
-    for (int k = k_lo; k <= k_hi; ++k) {
-      const double log_l = static_cast<double>(k) / per_decade;
-      if (taken(log_l) || !(std::fabs(log_l - x) < best)) continue;  // strict: ties to the smaller
+    for (const double log_l : candidates) {
+      if (!(std::fabs(log_l - x) < best)) continue;  // strict: ties to the smaller
       best = std::fabs(log_l - x);
       a.next = NextLambda{std::pow(10.0, log_l), NAN, NAN};
     }
@@ -91,9 +97,7 @@ CrossoverAdvice next_lambda(int /*dimension*/, const CrossoverFit& fit, const st
   auto phi = [&](const Mat2& c) { return c(0, 0) / (s_x * s_x) + c(1, 1) / (s_b * s_b); };
   const double phi_now = phi(cov), sigma = median(errs);
   double best = -INFINITY;
-  for (int k = k_lo; k <= k_hi; ++k) {
-    const double log_l = static_cast<double>(k) / per_decade;  // from the index: the same grid every time
-    if (taken(log_l)) continue;
+  for (const double log_l : candidates) {
     const double lc = std::pow(10.0, log_l);
     const Vec2 g = gradient(x, b, lc);
     const Eigen::FullPivLU<Mat2> after_lu(F + g * g.transpose() / (sigma * sigma));

@@ -40,6 +40,13 @@ struct CrossoverAdvice {
   std::optional<NextLambda> next;                    ///< unset when the targets are met
 };
 
+/// The candidate lambdas of a group, in log10 and ascending: k / per_decade (from the index, so
+/// the same grid every time) within [lambda_lo, lambda_hi], leaving out those within half a step
+/// of a lambda in `have` (the group's series; non-positive or infinite ones ignored). Throws
+/// FitError for a bad range or more than 100000 candidates.
+std::vector<double> free_candidate_log10_lambdas(const std::vector<double>& have, double lambda_lo, double lambda_hi,
+                                                 int per_decade);
+
 /// lambda, beta_err: the group's finite series (beta_err > 0). Candidates: per_decade points per
 /// decade on [lambda_lo, lambda_hi] (at 10^(k/per_decade)), leaving out those within half a
 /// step (in log10) of a series the group has. Throws FitError when no candidate is left.

@@ -123,6 +123,17 @@ std::string crossing_text(const MidpointCrossing& m) {
          format_value(m.lambda_hi, 2) + ")";
 }
 
+/// A crossing's replica spread in log10, "0.042 over 3 replicas", or "none".
+std::string crossing_spread_text(const MidpointCrossing& m) {
+  return std::isnan(m.spread) ? std::string("none")
+                              : format_value(m.spread, 2) + " over " + std::to_string(m.replicas) + " replicas";
+}
+
+/// A crossing's interpolation error in log10, or "none (no neighbouring lambda)".
+std::string crossing_interpolation_text(const MidpointCrossing& m) {
+  return std::isnan(m.interpolation) ? std::string("none (no neighbouring lambda)") : format_value(m.interpolation, 2);
+}
+
 /// "; beta turns back next to the crossing (z = 9.5): ..." where a neighbouring step goes
 /// against the bracketing pair's direction by more than kClaimAgreeSigmas, else "".
 std::string reversal_text(const MidpointCrossing& m, const std::string& where = "") {
@@ -146,12 +157,8 @@ ClaimCheck crossing_lambda_c_check(const Crossover& g, const MidpointCrossing& m
   const double log10_sigma = m.verdict_sigma();
   c.sigma = c.measured * std::log(10.0) * log10_sigma;
   c.measured_text = crossing_text(m) + "; sigma of log10 " + format_value(log10_sigma, 2) + ": the exponents' errors " +
-                    format_value(m.sigma, 2) + ", the replicas' spread " +
-                    (std::isnan(m.spread) ? std::string("none") : format_value(m.spread, 2) + " over " +
-                                                                    std::to_string(m.replicas) + " replicas") +
-                    ", the interpolation's " +
-                    (std::isnan(m.interpolation) ? std::string("none (no neighbouring lambda)") : format_value(m.interpolation, 2)) +
-                    reversal_text(m);
+                    format_value(m.sigma, 2) + ", the replicas' spread " + crossing_spread_text(m) +
+                    ", the interpolation's " + crossing_interpolation_text(m) + reversal_text(m);
   if (!(log10_sigma > 0)) {
     c.verdict = "not judged: no error";
     return c;
@@ -274,21 +281,12 @@ void theta_checks(const CampaignFits& fits, std::vector<ClaimCheck>& out) {
       c.sigma = c.measured * std::log(10.0) * log_sigma;
       c.measured_text = format_with_error(c.measured, c.sigma, " +- ") + " (" + crossing_text(*at) + " against " +
                         crossing_text(*at_ref) + " at " + format_value(reference, 3) + " deg";
-      if (!std::isnan(at->spread) || !std::isnan(at_ref->spread)) {
-        auto spread_text = [](const MidpointCrossing& m) {
-          return std::isnan(m.spread) ? std::string("none")
-                                      : format_value(m.spread, 2) + " over " + std::to_string(m.replicas) + " replicas";
-        };
-        c.measured_text += "; spread of log10 lambda " + spread_text(*at) + " and " + spread_text(*at_ref) + " at " +
-                           format_value(reference, 3) + " deg";
-      }
-      auto interpolation_text = [](const MidpointCrossing& m) {
-        return std::isnan(m.interpolation) ? std::string("none (no neighbouring lambda)")
-                                           : format_value(m.interpolation, 2);
-      };
+      if (!std::isnan(at->spread) || !std::isnan(at_ref->spread))
+        c.measured_text += "; spread of log10 lambda " + crossing_spread_text(*at) + " and " + crossing_spread_text(*at_ref) +
+                           " at " + format_value(reference, 3) + " deg";
       c.measured_text += "; sigma from the exponents' errors or the replicas' spread, and in quadrature the "
                          "interpolation's, where a parabola through a neighbouring lambda moves the crossing: " +
-                         interpolation_text(*at) + " and " + interpolation_text(*at_ref) + " decades" +
+                         crossing_interpolation_text(*at) + " and " + crossing_interpolation_text(*at_ref) + " decades" +
                          reversal_text(*at, " at " + format_value(theta, 3) + " deg") +
                          reversal_text(*at_ref, " at " + format_value(reference, 3) + " deg") + ")";
       judge_ratio(c, log_ratio, log_sigma, plateau);
